@@ -1,0 +1,560 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// CGAL::Fast_Delaunay_triangulation_3: a drop-in for CGAL's
+// Delaunay_triangulation_3 that stores the triangulation in flat arrays and
+// inserts points with the engine of Marot, Pellerin and Remacle, "One
+// machine, one minute, three billion tetrahedra" (2019): BRIO + Moore-curve
+// sort, visibility walk, cavity by breadth-first search, Delaunay ball with a
+// cavity adjacency table, ghost vertex, exact predicates with CGAL's symbolic
+// perturbation.  For points in any position the finite cells are exactly those
+// of CGAL::Delaunay_triangulation_3 on the same points.
+
+#ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_H
+#define CGAL_FAST_DELAUNAY_TRIANGULATION_3_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Iterator_range.h>
+#include <CGAL/Triangulation_utils_3.h>
+#include <CGAL/enum.h>
+#include <CGAL/utility.h>
+
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+
+template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
+          class Location_policy = Default, class Lock_data_structure_ = Default>
+class Fast_Delaunay_triangulation_3
+{
+  typedef Fast_Delaunay_triangulation_3<Gt, Tds_, Location_policy, Lock_data_structure_> Self;
+  typedef Fast_Delaunay_triangulation_3_internal::Triangulation_core Core;
+  typedef Fast_Delaunay_triangulation_3_internal::Flat_storage Flat_storage;
+  typedef Fast_Delaunay_triangulation_3_internal::Vertex_id Vertex_id;
+  typedef Fast_Delaunay_triangulation_3_internal::Tet_id Tet_id;
+
+  static_assert(std::is_same<typename Gt::FT, double>::value,
+                "Fast_Delaunay_triangulation_3 needs a kernel with double coordinates (e.g. Epick)");
+
+public:
+  typedef Gt Geom_traits;
+  typedef typename Gt::Point_3 Point;
+  typedef typename Gt::Segment_3 Segment;
+  typedef typename Gt::Triangle_3 Triangle;
+  typedef typename Gt::Tetrahedron_3 Tetrahedron;
+  typedef std::size_t size_type;
+  typedef std::ptrdiff_t difference_type;
+
+  typedef Fast_Delaunay_triangulation_3_internal::Vertex_facade<Self> Vertex;
+  typedef Fast_Delaunay_triangulation_3_internal::Cell_facade<Self> Cell;
+  typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Vertex, Vertex_id> Vertex_handle;
+  typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Cell, Tet_id> Cell_handle;
+  typedef std::pair<Cell_handle, int> Facet;
+  typedef CGAL::Triple<Cell_handle, int, int> Edge;
+
+  enum Locate_type { VERTEX = 0, EDGE, FACET, CELL, OUTSIDE_CONVEX_HULL, OUTSIDE_AFFINE_HULL };
+
+private:
+  // Filters of the index iterators.
+  struct Accept_live_cell
+  {
+    bool operator()(const Self& t, Tet_id id) const { return t.core_.mesh.is_live(id); }
+  };
+  struct Accept_finite_cell
+  {
+    bool operator()(const Self& t, Tet_id id) const
+    {
+      return t.core_.mesh.is_live(id) && !t.core_.mesh.is_ghost(id);
+    }
+  };
+  struct Accept_any_vertex
+  {
+    bool operator()(const Self&, Vertex_id) const { return true; }
+  };
+
+public:
+  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell, Cell_handle, Tet_id, Accept_live_cell>
+      All_cells_iterator;
+  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell, Cell_handle, Tet_id, Accept_finite_cell>
+      Finite_cells_iterator;
+  typedef All_cells_iterator Cell_iterator;
+  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Vertex, Vertex_handle, Vertex_id, Accept_any_vertex>
+      Finite_vertices_iterator;
+
+  // All vertices: the infinite vertex first, then the finite ones (CGAL's order).
+  class All_vertices_iterator
+  {
+  public:
+    typedef std::forward_iterator_tag iterator_category;
+    typedef Vertex value_type;
+    typedef std::ptrdiff_t difference_type;
+    typedef const Vertex* pointer;
+    typedef const Vertex& reference;
+
+    All_vertices_iterator() = default;
+    All_vertices_iterator(const Self* tr, std::size_t position)
+        : position_(position), facade_(tr, id_at(position)) {}
+    const Vertex& operator*() const { return facade_; }
+    const Vertex* operator->() const { return &facade_; }
+    operator Vertex_handle() const { return Vertex_handle(facade_.triangulation(), facade_.id()); }
+    All_vertices_iterator& operator++()
+    {
+      ++position_;
+      facade_ = Vertex(facade_.triangulation(), id_at(position_));
+      return *this;
+    }
+    All_vertices_iterator operator++(int) { All_vertices_iterator old = *this; ++*this; return old; }
+    friend bool operator==(const All_vertices_iterator& a, const All_vertices_iterator& b) { return a.position_ == b.position_; }
+    friend bool operator!=(const All_vertices_iterator& a, const All_vertices_iterator& b) { return a.position_ != b.position_; }
+
+  private:
+    static Vertex_id id_at(std::size_t position)
+    {
+      return position == 0 ? Fast_Delaunay_triangulation_3_internal::ghost_vertex
+                           : static_cast<Vertex_id>(position - 1);
+    }
+    std::size_t position_ = 0;
+    Vertex facade_;
+  };
+  typedef All_vertices_iterator Vertex_iterator;
+
+  // Facets and edges are enumerated once each, from the cell of smallest
+  // index among those that share them.
+  template <bool finite_only>
+  class Facet_iterator_t
+  {
+  public:
+    typedef std::forward_iterator_tag iterator_category;
+    typedef Facet value_type;
+    typedef std::ptrdiff_t difference_type;
+    typedef const Facet* pointer;
+    typedef const Facet& reference;
+
+    Facet_iterator_t() = default;
+    Facet_iterator_t(const Self* tr, std::size_t code) : tr_(tr), code_(code) { skip(); }
+    const Facet& operator*() const { return facet_; }
+    const Facet* operator->() const { return &facet_; }
+    Facet_iterator_t& operator++() { ++code_; skip(); return *this; }
+    Facet_iterator_t operator++(int) { Facet_iterator_t old = *this; ++*this; return old; }
+    friend bool operator==(const Facet_iterator_t& a, const Facet_iterator_t& b) { return a.code_ == b.code_; }
+    friend bool operator!=(const Facet_iterator_t& a, const Facet_iterator_t& b) { return a.code_ != b.code_; }
+
+  private:
+    void skip()
+    {
+      const Flat_storage& m = tr_->core_.mesh;
+      const std::size_t end = 4 * m.number_of_slots();
+      for(; code_ < end; ++code_) {
+        const Tet_id t = code_ >> 2;
+        const int i = static_cast<int>(code_ & 3);
+        if(!m.is_live(t) || m.neighbor(t, i) < t) continue;
+        if(finite_only && m.is_ghost(t) && i != 3) continue;
+        break;
+      }
+      if(code_ < end) facet_ = Facet(Cell_handle(tr_, code_ >> 2), static_cast<int>(code_ & 3));
+    }
+    const Self* tr_ = nullptr;
+    std::size_t code_ = 0;
+    Facet facet_;
+  };
+  typedef Facet_iterator_t<false> All_facets_iterator;
+  typedef Facet_iterator_t<true> Finite_facets_iterator;
+  typedef All_facets_iterator Facet_iterator;
+
+  template <bool finite_only>
+  class Edge_iterator_t
+  {
+  public:
+    typedef std::forward_iterator_tag iterator_category;
+    typedef Edge value_type;
+    typedef std::ptrdiff_t difference_type;
+    typedef const Edge* pointer;
+    typedef const Edge& reference;
+
+    Edge_iterator_t() = default;
+    Edge_iterator_t(const Self* tr, std::size_t code) : tr_(tr), code_(code) { skip(); }
+    const Edge& operator*() const { return edge_; }
+    const Edge* operator->() const { return &edge_; }
+    Edge_iterator_t& operator++() { ++code_; skip(); return *this; }
+    Edge_iterator_t operator++(int) { Edge_iterator_t old = *this; ++*this; return old; }
+    friend bool operator==(const Edge_iterator_t& a, const Edge_iterator_t& b) { return a.code_ == b.code_; }
+    friend bool operator!=(const Edge_iterator_t& a, const Edge_iterator_t& b) { return a.code_ != b.code_; }
+
+  private:
+    void skip()
+    {
+      const Flat_storage& m = tr_->core_.mesh;
+      const std::size_t end = 6 * m.number_of_slots();
+      for(; code_ < end; ++code_) {
+        const Tet_id t = code_ / 6;
+        if(!m.is_live(t)) { code_ = 6 * t + 5; continue; }
+        const int i = edge_vertex[code_ % 6][0], j = edge_vertex[code_ % 6][1];
+        if(finite_only && (m.vertex(t, i) == Fast_Delaunay_triangulation_3_internal::ghost_vertex ||
+                           m.vertex(t, j) == Fast_Delaunay_triangulation_3_internal::ghost_vertex))
+          continue;
+        if(tr_->smallest_cell_around_edge(t, i, j) == t) break;
+      }
+      if(code_ < end)
+        edge_ = Edge(Cell_handle(tr_, code_ / 6), edge_vertex[code_ % 6][0], edge_vertex[code_ % 6][1]);
+    }
+    const Self* tr_ = nullptr;
+    std::size_t code_ = 0;
+    Edge edge_;
+  };
+  typedef Edge_iterator_t<false> All_edges_iterator;
+  typedef Edge_iterator_t<true> Finite_edges_iterator;
+  typedef All_edges_iterator Edge_iterator;
+
+  typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<All_cells_iterator, Cell_handle> All_cell_handles_iterator;
+  typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<Finite_cells_iterator, Cell_handle> Finite_cell_handles_iterator;
+  typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<All_vertices_iterator, Vertex_handle> All_vertex_handles_iterator;
+  typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<Finite_vertices_iterator, Vertex_handle> Finite_vertex_handles_iterator;
+
+  typedef Iterator_range<All_cells_iterator> All_cells;
+  typedef Iterator_range<Finite_cells_iterator> Finite_cells;
+  typedef Iterator_range<All_vertices_iterator> All_vertices;
+  typedef Iterator_range<Finite_vertices_iterator> Finite_vertices;
+  typedef Iterator_range<All_facets_iterator> All_facets;
+  typedef Iterator_range<Finite_facets_iterator> Finite_facets;
+  typedef Iterator_range<All_edges_iterator> All_edges;
+  typedef Iterator_range<Finite_edges_iterator> Finite_edges;
+  typedef Iterator_range<All_cell_handles_iterator> All_cell_handles;
+  typedef Iterator_range<Finite_cell_handles_iterator> Finite_cell_handles;
+  typedef Iterator_range<All_vertex_handles_iterator> All_vertex_handles;
+  typedef Iterator_range<Finite_vertex_handles_iterator> Finite_vertex_handles;
+
+  typedef Fast_Delaunay_triangulation_3_internal::Insertion_report Insertion_report;
+
+  // ---------------------------------------------------------------- creation
+  explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits()) : traits_(gt) {}
+
+  template <class InputIterator>
+  Fast_Delaunay_triangulation_3(InputIterator first, InputIterator last,
+                                const Geom_traits& gt = Geom_traits())
+      : traits_(gt)
+  {
+    insert(first, last);
+  }
+
+  Fast_Delaunay_triangulation_3(const Self& other) : traits_(other.traits_), core_(other.core_) {}
+  Fast_Delaunay_triangulation_3(Self&& other) noexcept
+      : traits_(std::move(other.traits_)), core_(std::move(other.core_))
+  {
+    other.core_.clear();
+  }
+  Self& operator=(const Self& other)
+  {
+    if(this != &other) {
+      traits_ = other.traits_;
+      core_ = other.core_;
+      incident_cells_.clear();
+    }
+    return *this;
+  }
+  Self& operator=(Self&& other) noexcept
+  {
+    if(this != &other) {
+      traits_ = std::move(other.traits_);
+      core_ = std::move(other.core_);
+      other.core_.clear();
+      incident_cells_.clear();
+      other.incident_cells_.clear();
+    }
+    return *this;
+  }
+  void swap(Self& other)
+  {
+    std::swap(traits_, other.traits_);
+    std::swap(core_, other.core_);
+    incident_cells_.clear();
+    other.incident_cells_.clear();
+  }
+  void clear()
+  {
+    core_.clear();
+    incident_cells_.clear();
+  }
+
+  // ---------------------------------------------------------------- options
+  // Seed of the insertion order (the triangulation itself does not depend on it).
+  void set_seed(std::uint64_t seed) { core_.seed = seed; }
+  // Per-phase timings of insertions (sort, walk, cavity, ball), see last_insertion_report().
+  void set_phase_timing(bool on) { core_.timed = on; }
+  const Insertion_report& last_insertion_report() const { return core_.last_report; }
+
+  // ---------------------------------------------------------------- insertion
+  // Inserts the points of [first, last); returns the number of new vertices.
+  // A point with a NaN or infinite coordinate throws std::invalid_argument
+  // before anything changes.  Duplicates are stored once.
+  template <class InputIterator>
+  std::ptrdiff_t insert(InputIterator first, InputIterator last,
+                        typename std::enable_if<!std::is_convertible<InputIterator, Cell_handle>::value>::type* = nullptr)
+  {
+    std::vector<double> xyz;
+    append_coordinates(first, last, xyz,
+                       typename std::iterator_traits<InputIterator>::iterator_category());
+    const std::size_t n = xyz.size() / 3;
+    Core::check_finite(xyz.data(), n);
+    incident_cells_.clear();
+    return static_cast<std::ptrdiff_t>(core_.insert(xyz.data(), n, nullptr));
+  }
+
+  Vertex_handle insert(const Point& p)
+  {
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    incident_cells_.clear();
+    return Vertex_handle(this, core_.insert_one(xyz));
+  }
+  Vertex_handle insert(const Point& p, Cell_handle) { return insert(p); }
+  Vertex_handle insert(const Point& p, Vertex_handle) { return insert(p); }
+
+  // ---------------------------------------------------------------- access
+  const Geom_traits& geom_traits() const { return traits_; }
+  int dimension() const { return core_.dimension; }
+  size_type number_of_vertices() const { return core_.number_of_vertices(); }
+  // Cells, finite and infinite; 0 in dimension < 3 (this package stores no
+  // lower-dimensional cells).
+  size_type number_of_cells() const { return dimension() < 3 ? 0 : core_.mesh.live_tets; }
+  size_type number_of_finite_cells() const
+  {
+    return dimension() < 3 ? 0 : core_.mesh.live_tets - core_.mesh.ghost_tets;
+  }
+  size_type number_of_facets() const { return 2 * number_of_cells(); }
+  size_type number_of_finite_facets() const
+  {
+    return dimension() < 3 ? 0 : (4 * number_of_finite_cells() + core_.mesh.ghost_tets) / 2;
+  }
+  // Euler's relation on the triangulated ball: V - E + F - T = 1.
+  size_type number_of_finite_edges() const
+  {
+    if(dimension() < 3) return 0;
+    return number_of_vertices() + number_of_finite_facets() - number_of_finite_cells() - 1;
+  }
+  // Plus one infinite edge per hull vertex; the hull is a triangulated sphere
+  // with H facets and H/2 + 2 vertices.
+  size_type number_of_edges() const
+  {
+    return dimension() < 3 ? 0 : number_of_finite_edges() + core_.mesh.ghost_tets / 2 + 2;
+  }
+
+  Vertex_handle infinite_vertex() const
+  {
+    return Vertex_handle(this, Fast_Delaunay_triangulation_3_internal::ghost_vertex);
+  }
+  Cell_handle infinite_cell() const
+  {
+    const Flat_storage& m = core_.mesh;
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t)
+      if(m.is_live(t) && m.is_ghost(t)) return Cell_handle(this, t);
+    return Cell_handle();
+  }
+
+  bool is_infinite(Vertex_handle v) const { return v->id() == Fast_Delaunay_triangulation_3_internal::ghost_vertex; }
+  bool is_infinite(Cell_handle c) const { return core_.mesh.is_ghost(c->id()); }
+  bool is_infinite(Cell_handle c, int i) const
+  {
+    return is_infinite(c) && i != 3; // the ghost vertex is always vertex 3
+  }
+  bool is_infinite(const Facet& f) const { return is_infinite(f.first, f.second); }
+  bool is_infinite(Cell_handle c, int i, int j) const
+  {
+    return is_infinite(c->vertex(i)) || is_infinite(c->vertex(j));
+  }
+  bool is_infinite(const Edge& e) const { return is_infinite(e.first, e.second, e.third); }
+
+  int mirror_index(Cell_handle c, int i) const
+  {
+    return Fast_Delaunay_triangulation_3_internal::facet_of(core_.mesh.neighbor_code(c->id(), i));
+  }
+  Vertex_handle mirror_vertex(Cell_handle c, int i) const
+  {
+    return c->neighbor(i)->vertex(mirror_index(c, i));
+  }
+  Facet mirror_facet(const Facet& f) const
+  {
+    return Facet(f.first->neighbor(f.second), mirror_index(f.first, f.second));
+  }
+
+  Point point(Cell_handle c, int i) const { return c->vertex(i)->point(); }
+  Point point(Vertex_handle v) const { return v->point(); }
+  Tetrahedron tetrahedron(Cell_handle c) const
+  {
+    return Tetrahedron(point(c, 0), point(c, 1), point(c, 2), point(c, 3));
+  }
+
+  // ---------------------------------------------------------------- iterators
+  All_cells_iterator all_cells_begin() const { return All_cells_iterator(this, 0, cell_slots()); }
+  All_cells_iterator all_cells_end() const { return All_cells_iterator(this, cell_slots(), cell_slots()); }
+  All_cells_iterator cells_begin() const { return all_cells_begin(); }
+  All_cells_iterator cells_end() const { return all_cells_end(); }
+  Finite_cells_iterator finite_cells_begin() const { return Finite_cells_iterator(this, 0, cell_slots()); }
+  Finite_cells_iterator finite_cells_end() const { return Finite_cells_iterator(this, cell_slots(), cell_slots()); }
+
+  All_vertices_iterator all_vertices_begin() const { return All_vertices_iterator(this, 0); }
+  All_vertices_iterator all_vertices_end() const
+  {
+    return All_vertices_iterator(this, dimension() < 0 ? 0 : number_of_vertices() + 1);
+  }
+  All_vertices_iterator vertices_begin() const { return all_vertices_begin(); }
+  All_vertices_iterator vertices_end() const { return all_vertices_end(); }
+  Finite_vertices_iterator finite_vertices_begin() const
+  {
+    return Finite_vertices_iterator(this, 0, vertex_count());
+  }
+  Finite_vertices_iterator finite_vertices_end() const
+  {
+    return Finite_vertices_iterator(this, vertex_count(), vertex_count());
+  }
+
+  All_facets_iterator all_facets_begin() const { return All_facets_iterator(this, 0); }
+  All_facets_iterator all_facets_end() const { return All_facets_iterator(this, 4 * cell_slots()); }
+  All_facets_iterator facets_begin() const { return all_facets_begin(); }
+  All_facets_iterator facets_end() const { return all_facets_end(); }
+  Finite_facets_iterator finite_facets_begin() const { return Finite_facets_iterator(this, 0); }
+  Finite_facets_iterator finite_facets_end() const { return Finite_facets_iterator(this, 4 * cell_slots()); }
+
+  All_edges_iterator all_edges_begin() const { return All_edges_iterator(this, 0); }
+  All_edges_iterator all_edges_end() const { return All_edges_iterator(this, 6 * cell_slots()); }
+  All_edges_iterator edges_begin() const { return all_edges_begin(); }
+  All_edges_iterator edges_end() const { return all_edges_end(); }
+  Finite_edges_iterator finite_edges_begin() const { return Finite_edges_iterator(this, 0); }
+  Finite_edges_iterator finite_edges_end() const { return Finite_edges_iterator(this, 6 * cell_slots()); }
+
+  All_cells all_cells() const { return All_cells(all_cells_begin(), all_cells_end()); }
+  Finite_cells finite_cells() const { return Finite_cells(finite_cells_begin(), finite_cells_end()); }
+  All_vertices all_vertices() const { return All_vertices(all_vertices_begin(), all_vertices_end()); }
+  Finite_vertices finite_vertices() const { return Finite_vertices(finite_vertices_begin(), finite_vertices_end()); }
+  All_facets all_facets() const { return All_facets(all_facets_begin(), all_facets_end()); }
+  Finite_facets finite_facets() const { return Finite_facets(finite_facets_begin(), finite_facets_end()); }
+  All_edges all_edges() const { return All_edges(all_edges_begin(), all_edges_end()); }
+  Finite_edges finite_edges() const { return Finite_edges(finite_edges_begin(), finite_edges_end()); }
+
+  All_cell_handles all_cell_handles() const
+  {
+    return All_cell_handles(All_cell_handles_iterator(all_cells_begin()), All_cell_handles_iterator(all_cells_end()));
+  }
+  Finite_cell_handles finite_cell_handles() const
+  {
+    return Finite_cell_handles(Finite_cell_handles_iterator(finite_cells_begin()),
+                               Finite_cell_handles_iterator(finite_cells_end()));
+  }
+  All_vertex_handles all_vertex_handles() const
+  {
+    return All_vertex_handles(All_vertex_handles_iterator(all_vertices_begin()),
+                              All_vertex_handles_iterator(all_vertices_end()));
+  }
+  Finite_vertex_handles finite_vertex_handles() const
+  {
+    return Finite_vertex_handles(Finite_vertex_handles_iterator(finite_vertices_begin()),
+                                 Finite_vertex_handles_iterator(finite_vertices_end()));
+  }
+
+  // ---------------------------------------------------------------- checking
+  // Combinatorial validity, positive orientation and the local Delaunay
+  // property with exact predicates.
+  bool is_valid(bool verbose = false, int = 0) const
+  {
+    std::string why;
+    const bool ok = core_.is_valid(&why);
+    if(!ok && verbose) std::cerr << "Fast_Delaunay_triangulation_3::is_valid: " << why << std::endl;
+    return ok;
+  }
+
+  // ---------------------------------------------------------------- internals used by handles
+  const Flat_storage& flat_storage() const { return core_.mesh; }
+  Point point_of(Vertex_id v) const
+  {
+    if(v == Fast_Delaunay_triangulation_3_internal::ghost_vertex) return Point(0, 0, 0);
+    const double* p = core_.mesh.point(v);
+    return Point(p[0], p[1], p[2]);
+  }
+  Cell_handle incident_cell_of(Vertex_id v) const
+  {
+    if(dimension() < 3) return Cell_handle();
+    if(incident_cells_.empty()) build_incident_cells();
+    if(v == Fast_Delaunay_triangulation_3_internal::ghost_vertex) return infinite_cell();
+    return Cell_handle(this, incident_cells_[v]);
+  }
+  // The cell of smallest index among those around edge (v_i, v_j) of t.
+  Tet_id smallest_cell_around_edge(Tet_id t, int i, int j) const
+  {
+    const Flat_storage& m = core_.mesh;
+    const Vertex_id a = m.vertex(t, i), b = m.vertex(t, j);
+    // Turning around the edge: leave each cell through the facet opposite the
+    // off-edge vertex that the previous cell did not share.
+    Vertex_id cross = m.vertex(t, (i != 0 && j != 0) ? 0 : (i != 1 && j != 1) ? 1 : 2);
+    Tet_id smallest = t, c = t;
+    for(;;) {
+      int cross_slot = -1;
+      Vertex_id other = cross;
+      for(int s = 0; s < 4; ++s) {
+        const Vertex_id v = m.vertex(c, s);
+        if(v == a || v == b) continue;
+        if(v == cross) cross_slot = s;
+        else other = v;
+      }
+      CGAL_assertion(cross_slot >= 0);
+      c = m.neighbor(c, cross_slot);
+      if(c == t) break;
+      smallest = std::min(smallest, c);
+      cross = other;
+    }
+    return smallest;
+  }
+
+private:
+  std::size_t cell_slots() const { return dimension() < 3 ? 0 : core_.mesh.number_of_slots(); }
+  Vertex_id vertex_count() const { return static_cast<Vertex_id>(number_of_vertices()); }
+
+  void build_incident_cells() const
+  {
+    const Flat_storage& m = core_.mesh;
+    incident_cells_.assign(number_of_vertices(), Tet_id(-1));
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+      if(!m.is_live(t)) continue;
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_id v = m.vertex(t, i);
+        if(v != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[v] = t;
+      }
+    }
+  }
+
+  template <class InputIterator>
+  static void append_coordinates(InputIterator first, InputIterator last, std::vector<double>& xyz,
+                                 std::forward_iterator_tag)
+  {
+    xyz.reserve(3 * static_cast<std::size_t>(std::distance(first, last)));
+    append_coordinates(first, last, xyz, std::input_iterator_tag());
+  }
+  template <class InputIterator>
+  static void append_coordinates(InputIterator first, InputIterator last, std::vector<double>& xyz,
+                                 std::input_iterator_tag)
+  {
+    for(; first != last; ++first) {
+      const Point& p = *first;
+      xyz.push_back(p.x());
+      xyz.push_back(p.y());
+      xyz.push_back(p.z());
+    }
+  }
+
+  static constexpr int edge_vertex[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+  Geom_traits traits_;
+  Core core_;
+  mutable std::vector<Tet_id> incident_cells_; // lazily built v->cell() cache
+};
+
+} // namespace CGAL
+
+#endif // CGAL_FAST_DELAUNAY_TRIANGULATION_3_H

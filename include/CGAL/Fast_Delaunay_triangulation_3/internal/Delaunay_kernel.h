@@ -1,0 +1,393 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Delaunay kernel (paper §2.1, Algorithm 1): insert one point into a
+// Delaunay triangulation held in Flat_storage, in three steps
+//   WALK          visibility walk from a hint to a tetrahedron containing p;
+//   CAVITY        breadth-first search of the tetrahedra in conflict with p (§2.4);
+//   DELAUNAYBALL  one new tetrahedron per cavity boundary facet, adjacencies
+//                 found through the cavity adjacency table (§2.5).
+// The kernel allocates nothing per point: buffers live in Insertion_scratch.
+// Ghost tetrahedra (§2.6) keep the ghost vertex in slot 3.
+
+#ifndef CGAL_FDT3_INTERNAL_DELAUNAY_KERNEL_H
+#define CGAL_FDT3_INTERNAL_DELAUNAY_KERNEL_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// Facet f of a positively oriented tetrahedron (v0, v1, v2, v3), as the
+// slots (a, b, c) of an even permutation (v_f, a, b, c) of the tetrahedron:
+// replacing v_f by any point on v_f's side of the facet keeps (x, a, b, c)
+// positively oriented.  Used for the cavity boundary facets, whose new
+// tetrahedron is (p, a, b, c).
+constexpr int facet_vertex[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+enum class Insertion_result { inserted, duplicate, aborted };
+
+// A facet of the cavity boundary: the new tetrahedron (p, v[0], v[1], v[2]),
+// rotated so that a ghost vertex comes last, and the facet code of the
+// tetrahedron outside the cavity that shares it.
+struct Boundary_facet
+{
+  Vertex_id v[3];
+  Facet_code outside;
+};
+static_assert(sizeof(Boundary_facet) == 24, "boundary facet record");
+
+// Counters and optional per-phase times (paper Table 1).
+struct Kernel_statistics
+{
+  std::uint64_t inserted = 0, duplicates = 0;
+  std::uint64_t walk_steps = 0;
+  std::uint64_t cavity_tets = 0, ball_tets = 0;
+  std::uint64_t conflict_tests = 0;
+  std::uint64_t small_cavities = 0, large_cavities = 0; // adjacency table vs. sorted fallback
+  double walk_seconds = 0, cavity_seconds = 0, ball_seconds = 0;
+
+  void add(const Kernel_statistics& o)
+  {
+    inserted += o.inserted; duplicates += o.duplicates; walk_steps += o.walk_steps;
+    cavity_tets += o.cavity_tets; ball_tets += o.ball_tets; conflict_tests += o.conflict_tests;
+    small_cavities += o.small_cavities; large_cavities += o.large_cavities;
+    walk_seconds += o.walk_seconds; cavity_seconds += o.cavity_seconds; ball_seconds += o.ball_seconds;
+  }
+};
+
+// Per-thread buffers of the kernel.
+struct Insertion_scratch
+{
+  // The adjacency table is indexed by directed edges between cavity boundary
+  // vertices numbered 0..31 (0 is the ghost); the paper's n_max = 32 covers
+  // cavities of up to 60 boundary facets.
+  static constexpr int table_size = 32;
+
+  std::vector<Tet_id> cavity;            // BFS queue, then the deleted tetrahedra
+  std::vector<Boundary_facet> boundary;  // facets of the cavity boundary
+  std::vector<Tet_id> ball;              // slots of the new tetrahedra
+  std::vector<Vertex_id> boundary_vertices;
+  struct Half_edge { std::uint64_t key; Facet_code facet; };
+  std::vector<Half_edge> large_edges;     // fallback adjacency for large cavities
+  Facet_code edge_table[table_size * table_size];
+  std::uint32_t random_state = 0x9e3779b9u;
+  bool timed = false;
+  Kernel_statistics stats;
+
+  unsigned next_random()
+  {
+    // xorshift32: only picks the first facet a walk step looks at.
+    random_state ^= random_state << 13;
+    random_state ^= random_state >> 17;
+    random_state ^= random_state << 5;
+    return random_state;
+  }
+};
+
+// Inserts points one at a time into a 3D Delaunay triangulation stored in a
+// Flat_storage.  Preconditions of insert(): the storage holds a valid
+// triangulation of dimension 3 with ghost tetrahedra, and the point's vertex
+// record has been written; vertex scratch words are 0 at rest.
+class Delaunay_kernel
+{
+public:
+  Delaunay_kernel(Flat_storage& mesh, Insertion_scratch& scratch) : m_(mesh), s_(scratch) {}
+
+  // Inserts vertex v.  `hint` is a live tetrahedron where the walk starts; on
+  // return it is a tetrahedron near v.  A point equal to an existing vertex
+  // is not inserted: `duplicate_of` receives that vertex.
+  Insertion_result insert(Vertex_id v, Tet_id& hint, Vertex_id& duplicate_of)
+  {
+    const double* p = m_.point(v);
+    Clock::time_point t0, t1, t2, t3;
+    if(s_.timed) t0 = Clock::now();
+    const Tet_id start = walk(hint, p);
+    if(s_.timed) t1 = Clock::now();
+
+    if(!m_.is_ghost(start)) {
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_id w = m_.vertex(start, i);
+        if(same_point(m_.point(w), p)) {
+          duplicate_of = w;
+          hint = start;
+          ++s_.stats.duplicates;
+          if(s_.timed) s_.stats.walk_seconds += seconds(t0, t1);
+          return Insertion_result::duplicate;
+        }
+      }
+    }
+
+    cavity(start, p);
+    if(s_.timed) t2 = Clock::now();
+    delaunay_ball(v);
+    if(s_.timed) {
+      t3 = Clock::now();
+      s_.stats.walk_seconds += seconds(t0, t1);
+      s_.stats.cavity_seconds += seconds(t1, t2);
+      s_.stats.ball_seconds += seconds(t2, t3);
+    }
+    hint = s_.ball.front();
+    ++s_.stats.inserted;
+    return Insertion_result::inserted;
+  }
+
+  // WALK: a tetrahedron whose closure contains p, or a ghost tetrahedron whose
+  // hull facet sees p strictly.  Visibility walk with a random first facet
+  // per step, which cannot cycle forever (Devillers, Pion, Teillaud 2002).
+  Tet_id walk(Tet_id t, const double* p)
+  {
+    if(m_.is_ghost(t)) t = m_.neighbor(t, 3);
+    Tet_id previous = Tet_id(-1);
+    std::uint64_t steps = 0;
+    const std::uint64_t step_limit = 64 + 8 * m_.number_of_slots();
+    for(;;) {
+      if(m_.is_ghost(t)) break;
+      const Vertex_id* tv = &m_.tet_vertices[4 * t];
+      const double* w[4] = {m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), m_.point(tv[3])};
+      const int first = static_cast<int>(s_.next_random() & 3);
+      Tet_id next = Tet_id(-1);
+      for(int k = 0; k < 4; ++k) {
+        const int f = (first + k) & 3;
+        const Tet_id u = m_.neighbor(t, f);
+        if(u == previous) continue;
+        const double* q[4] = {w[0], w[1], w[2], w[3]};
+        q[f] = p;
+        if(orientation(q[0], q[1], q[2], q[3]) < 0) {
+          next = u;
+          break;
+        }
+      }
+      if(next == Tet_id(-1)) break;
+      previous = t;
+      t = next;
+      if(++steps > step_limit) return locate_by_scan(p);
+    }
+    s_.stats.walk_steps += steps;
+    return t;
+  }
+
+  // Conflict test of a live tetrahedron with p (perturbed, never a tie).
+  bool in_conflict(Tet_id t, const double* p) const
+  {
+    const Vertex_id* tv = &m_.tet_vertices[4 * t];
+    if(tv[3] == ghost_vertex)
+      return ghost_cell_in_conflict(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), p);
+    return finite_cell_in_conflict(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]),
+                                   m_.point(tv[3]), p);
+  }
+
+private:
+  typedef std::chrono::steady_clock Clock;
+  static double seconds(Clock::time_point a, Clock::time_point b)
+  {
+    return std::chrono::duration<double>(b - a).count();
+  }
+
+  // Fallback of the walk: cannot happen with exact predicates on a valid
+  // triangulation, kept so a corrupted state is detected rather than looped on.
+  Tet_id locate_by_scan(const double* p)
+  {
+    CGAL_assertion_msg(false, "visibility walk exceeded its step limit");
+    for(Tet_id t = 0; t < m_.number_of_slots(); ++t)
+      if(m_.is_live(t) && in_conflict(t, p)) return t;
+    return 0;
+  }
+
+  // CAVITY: marks every tetrahedron in conflict with p as deleted and lists
+  // the boundary facets.  Afterwards: s_.cavity holds exactly the deleted
+  // tetrahedra, no tetrahedron carries tet_outside, and every boundary facet
+  // has its outside tetrahedron live.
+  void cavity(Tet_id start, const double* p)
+  {
+    std::vector<Tet_id>& cavity = s_.cavity;
+    std::vector<Boundary_facet>& boundary = s_.boundary;
+    cavity.clear();
+    boundary.clear();
+    m_.tet_flags[start] |= tet_deleted;
+    cavity.push_back(start);
+
+    for(std::size_t k = 0; k < cavity.size(); ++k) {
+      const Tet_id t = cavity[k];
+      for(int f = 0; f < 4; ++f) {
+        const Facet_code code = m_.tet_neighbors[4 * t + f];
+        const Tet_id u = tet_of(code);
+        const std::uint8_t flags = m_.tet_flags[u];
+        if(flags & tet_deleted) continue;
+        // A tetrahedron touching the cavity through several facets is tested once.
+        if(!(flags & tet_outside)) {
+          ++s_.stats.conflict_tests;
+          if(in_conflict(u, p)) {
+            m_.tet_flags[u] = flags | tet_deleted;
+            cavity.push_back(u);
+            continue;
+          }
+          m_.tet_flags[u] = flags | tet_outside;
+        }
+        push_boundary_facet(t, f, code);
+      }
+    }
+    for(const Boundary_facet& b : boundary)
+      m_.tet_flags[tet_of(b.outside)] &= static_cast<std::uint8_t>(~tet_outside);
+    s_.stats.cavity_tets += cavity.size();
+  }
+
+  void push_boundary_facet(Tet_id t, int f, Facet_code outside)
+  {
+    const Vertex_id* tv = &m_.tet_vertices[4 * t];
+    Boundary_facet b;
+    b.v[0] = tv[facet_vertex[f][0]];
+    b.v[1] = tv[facet_vertex[f][1]];
+    b.v[2] = tv[facet_vertex[f][2]];
+    // An even rotation keeps the orientation and puts the ghost in slot 3.
+    if(b.v[0] == ghost_vertex) {
+      b.v[0] = b.v[1]; b.v[1] = b.v[2]; b.v[2] = ghost_vertex;
+    } else if(b.v[1] == ghost_vertex) {
+      b.v[1] = b.v[0]; b.v[0] = b.v[2]; b.v[2] = ghost_vertex;
+    }
+    b.outside = outside;
+    s_.boundary.push_back(b);
+  }
+
+  // DELAUNAYBALL: fills the cavity with (p, a, b, c) for every boundary facet.
+  // Facet 0 of a new tetrahedron is the boundary facet; facets 1, 2, 3 contain
+  // p and the boundary edges (b,c), (c,a), (a,b), and are glued to the new
+  // tetrahedron on the other side of that edge, which sees it reversed.
+  void delaunay_ball(Vertex_id p)
+  {
+    const std::size_t facets = s_.boundary.size();
+    take_ball_slots(facets);
+    if(facets <= 2 * (Insertion_scratch::table_size - 2) && glue_with_table(p)) {
+      ++s_.stats.small_cavities;
+    } else {
+      glue_with_sorted_edges(p);
+      ++s_.stats.large_cavities;
+    }
+    m_.live_tets += facets - s_.cavity.size();
+    s_.stats.ball_tets += facets;
+  }
+
+  // New tetrahedra reuse the cavity's slots (cache-hot), then free slots.
+  void take_ball_slots(std::size_t facets)
+  {
+    std::vector<Tet_id>& ball = s_.ball;
+    ball.clear();
+    const std::size_t reused = std::min(facets, s_.cavity.size());
+    ball.insert(ball.end(), s_.cavity.begin(), s_.cavity.begin() + reused);
+    for(std::size_t k = reused; k < s_.cavity.size(); ++k)
+      m_.free_tets.push_back(s_.cavity[k]); // stays flagged deleted
+    std::size_t ghosts_removed = 0;
+    for(Tet_id t : s_.cavity) ghosts_removed += m_.is_ghost(t) ? 1 : 0;
+    m_.ghost_tets -= ghosts_removed;
+    while(ball.size() < facets) ball.push_back(m_.new_tet());
+  }
+
+  void write_ball_tet(Tet_id t, Vertex_id p, const Boundary_facet& b)
+  {
+    Vertex_id* tv = &m_.tet_vertices[4 * t];
+    tv[0] = p; tv[1] = b.v[0]; tv[2] = b.v[1]; tv[3] = b.v[2];
+    m_.tet_neighbors[4 * t] = b.outside;
+    m_.tet_neighbors[b.outside] = facet_code(t, 0);
+    m_.tet_flags[t] = 0;
+    if(b.v[2] == ghost_vertex) ++m_.ghost_tets;
+  }
+
+  // Local numbers 1..31 of the boundary vertices live in the vertex scratch
+  // words (0 = not numbered yet; the ghost is always 0).  Returns false when
+  // the boundary has too many vertices for the table.
+  bool glue_with_table(Vertex_id p)
+  {
+    constexpr unsigned n = Insertion_scratch::table_size;
+    std::vector<Vertex_id>& numbered = s_.boundary_vertices;
+    numbered.clear();
+    bool fits = true;
+    for(const Boundary_facet& b : s_.boundary) {
+      for(int i = 0; i < 3 && fits; ++i) {
+        const Vertex_id v = b.v[i];
+        if(v == ghost_vertex || m_.vertices[v].scratch != 0) continue;
+        if(numbered.size() + 1 == n) fits = false;
+        else {
+          numbered.push_back(v);
+          m_.vertices[v].scratch = numbered.size();
+        }
+      }
+      if(!fits) break;
+    }
+    if(fits) {
+      const std::size_t facets = s_.boundary.size();
+      for(std::size_t k = 0; k < facets; ++k) {
+        const Boundary_facet& b = s_.boundary[k];
+        const unsigned a = local_of(b.v[0]), bb = local_of(b.v[1]), c = local_of(b.v[2]);
+        const Tet_id t = s_.ball[k];
+        write_ball_tet(t, p, b);
+        s_.edge_table[bb * n + c] = facet_code(t, 1);
+        s_.edge_table[c * n + a] = facet_code(t, 2);
+        s_.edge_table[a * n + bb] = facet_code(t, 3);
+      }
+      // Every entry read here was written above: the boundary is a closed
+      // surface, so each directed edge appears once in each direction.
+      for(std::size_t k = 0; k < facets; ++k) {
+        const Boundary_facet& b = s_.boundary[k];
+        const unsigned a = local_of(b.v[0]), bb = local_of(b.v[1]), c = local_of(b.v[2]);
+        Facet_code* nb = &m_.tet_neighbors[4 * s_.ball[k]];
+        nb[1] = s_.edge_table[c * n + bb];
+        nb[2] = s_.edge_table[a * n + c];
+        nb[3] = s_.edge_table[bb * n + a];
+      }
+    }
+    for(Vertex_id v : numbered) m_.vertices[v].scratch = 0;
+    return fits;
+  }
+
+  unsigned local_of(Vertex_id v) const
+  {
+    return v == ghost_vertex ? 0u : static_cast<unsigned>(m_.vertices[v].scratch);
+  }
+
+  // Fallback for cavities with more than 31 boundary vertices: half-edges
+  // sorted by directed edge, each matched with its reverse.
+  void glue_with_sorted_edges(Vertex_id p)
+  {
+    auto& edges = s_.large_edges;
+    edges.clear();
+    auto key = [](Vertex_id from, Vertex_id to) {
+      return (static_cast<std::uint64_t>(from) << 32) | to;
+    };
+    const std::size_t facets = s_.boundary.size();
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = s_.boundary[k];
+      const Tet_id t = s_.ball[k];
+      write_ball_tet(t, p, b);
+      edges.push_back({key(b.v[1], b.v[2]), facet_code(t, 1)});
+      edges.push_back({key(b.v[2], b.v[0]), facet_code(t, 2)});
+      edges.push_back({key(b.v[0], b.v[1]), facet_code(t, 3)});
+    }
+    std::sort(edges.begin(), edges.end(),
+              [](const Insertion_scratch::Half_edge& x, const Insertion_scratch::Half_edge& y) {
+                return x.key < y.key;
+              });
+    for(const auto& e : edges) {
+      const std::uint64_t reverse = (e.key << 32) | (e.key >> 32);
+      auto it = std::lower_bound(edges.begin(), edges.end(), reverse,
+                                 [](const Insertion_scratch::Half_edge& x, std::uint64_t k) {
+                                   return x.key < k;
+                                 });
+      CGAL_assertion(it != edges.end() && it->key == reverse);
+      m_.tet_neighbors[e.facet] = it->facet;
+    }
+  }
+
+  Flat_storage& m_;
+  Insertion_scratch& s_;
+};
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_DELAUNAY_KERNEL_H

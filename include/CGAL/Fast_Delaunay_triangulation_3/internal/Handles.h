@@ -1,0 +1,233 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Lightweight vertex and cell handles over the flat arrays, with the member
+// functions of CGAL's Triangulation_3 vertices and cells (v->point(),
+// c->vertex(i), c->neighbor(i), c->index(v), ...), and the iterators that
+// enumerate them.  A handle is a (triangulation, index) pair: copying the
+// triangulation does not carry handles over, as with CGAL.
+
+#ifndef CGAL_FDT3_INTERNAL_HANDLES_H
+#define CGAL_FDT3_INTERNAL_HANDLES_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+
+#include <cstddef>
+#include <functional>
+#include <iterator>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// A vertex seen through the triangulation Tr (which provides point_of,
+// incident_cell_of and the handle types).
+template <class Tr>
+class Vertex_facade
+{
+public:
+  typedef typename Tr::Point Point;
+  typedef typename Tr::Cell_handle Cell_handle;
+
+  Vertex_facade() = default;
+  Vertex_facade(const Tr* tr, Vertex_id id) : tr_(tr), id_(id) {}
+
+  Point point() const { return tr_->point_of(id_); }
+  Cell_handle cell() const { return tr_->incident_cell_of(id_); }
+  bool is_valid(bool = false, int = 0) const { return tr_ != nullptr; }
+
+  Vertex_id id() const { return id_; }
+  const Tr* triangulation() const { return tr_; }
+
+private:
+  const Tr* tr_ = nullptr;
+  Vertex_id id_ = 0;
+};
+
+template <class Tr>
+class Cell_facade
+{
+public:
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Cell_handle Cell_handle;
+
+  Cell_facade() = default;
+  Cell_facade(const Tr* tr, Tet_id id) : tr_(tr), id_(id) {}
+
+  Vertex_handle vertex(int i) const { return Vertex_handle(tr_, mesh().vertex(id_, i)); }
+  Cell_handle neighbor(int i) const { return Cell_handle(tr_, mesh().neighbor(id_, i)); }
+  int index(Vertex_handle v) const
+  {
+    int i = -1;
+    const bool found = has_vertex(v, i);
+    CGAL_precondition(found);
+    (void)found;
+    return i;
+  }
+  int index(Cell_handle c) const
+  {
+    int i = -1;
+    const bool found = has_neighbor(c, i);
+    CGAL_precondition(found);
+    (void)found;
+    return i;
+  }
+  bool has_vertex(Vertex_handle v) const
+  {
+    int i;
+    return has_vertex(v, i);
+  }
+  bool has_vertex(Vertex_handle v, int& i) const
+  {
+    for(int k = 0; k < 4; ++k)
+      if(mesh().vertex(id_, k) == v->id()) { i = k; return true; }
+    return false;
+  }
+  bool has_neighbor(Cell_handle c) const
+  {
+    int i;
+    return has_neighbor(c, i);
+  }
+  bool has_neighbor(Cell_handle c, int& i) const
+  {
+    for(int k = 0; k < 4; ++k)
+      if(mesh().neighbor(id_, k) == c->id()) { i = k; return true; }
+    return false;
+  }
+  bool is_valid(bool = false, int = 0) const { return tr_ != nullptr && mesh().is_live(id_); }
+
+  Tet_id id() const { return id_; }
+  const Tr* triangulation() const { return tr_; }
+
+private:
+  const Flat_storage& mesh() const { return tr_->flat_storage(); }
+  const Tr* tr_ = nullptr;
+  Tet_id id_ = 0;
+};
+
+// A handle: holds its facade by value, so `->` needs no storage elsewhere.
+// Ordered and hashed by index, so handles work as std::map / unordered_map keys.
+template <class Facade, class Index>
+class Flat_handle
+{
+public:
+  typedef Facade value_type;
+  typedef typename std::remove_cv<typename std::remove_pointer<decltype(
+      std::declval<Facade>().triangulation())>::type>::type Tr;
+
+  Flat_handle() = default;
+  Flat_handle(std::nullptr_t) {}
+  Flat_handle(const Tr* tr, Index id) : facade_(tr, id) {}
+
+  const Facade* operator->() const { return &facade_; }
+  const Facade& operator*() const { return facade_; }
+  explicit operator bool() const { return facade_.triangulation() != nullptr; }
+
+  friend bool operator==(const Flat_handle& a, const Flat_handle& b)
+  {
+    return a.facade_.triangulation() == b.facade_.triangulation() && a.facade_.id() == b.facade_.id();
+  }
+  friend bool operator!=(const Flat_handle& a, const Flat_handle& b) { return !(a == b); }
+  friend bool operator==(const Flat_handle& a, std::nullptr_t) { return !a; }
+  friend bool operator!=(const Flat_handle& a, std::nullptr_t) { return bool(a); }
+  friend bool operator<(const Flat_handle& a, const Flat_handle& b)
+  {
+    if(a.facade_.triangulation() != b.facade_.triangulation())
+      return std::less<const void*>()(a.facade_.triangulation(), b.facade_.triangulation());
+    return a.facade_.id() < b.facade_.id();
+  }
+  friend bool operator>(const Flat_handle& a, const Flat_handle& b) { return b < a; }
+  friend bool operator<=(const Flat_handle& a, const Flat_handle& b) { return !(b < a); }
+  friend bool operator>=(const Flat_handle& a, const Flat_handle& b) { return !(a < b); }
+  friend std::size_t hash_value(const Flat_handle& h) { return std::hash<Index>()(h.facade_.id()); }
+
+private:
+  Facade facade_;
+};
+
+// Iterates over indices [0, end) that satisfy Tr's filter `Accept`, and
+// dereferences to the facade (as CGAL's iterators dereference to Vertex or
+// Cell); converts to the handle.
+template <class Facade, class Handle, class Index, class Accept>
+class Filtered_index_iterator
+{
+public:
+  typedef std::forward_iterator_tag iterator_category;
+  typedef Facade value_type;
+  typedef std::ptrdiff_t difference_type;
+  typedef const Facade* pointer;
+  typedef const Facade& reference;
+  typedef typename Handle::Tr Tr;
+
+  Filtered_index_iterator() = default;
+  Filtered_index_iterator(const Tr* tr, Index id, Index end) : facade_(tr, id), end_(end)
+  {
+    skip();
+  }
+
+  const Facade& operator*() const { return facade_; }
+  const Facade* operator->() const { return &facade_; }
+  operator Handle() const { return Handle(facade_.triangulation(), facade_.id()); }
+
+  Filtered_index_iterator& operator++()
+  {
+    facade_ = Facade(facade_.triangulation(), facade_.id() + 1);
+    skip();
+    return *this;
+  }
+  Filtered_index_iterator operator++(int)
+  {
+    Filtered_index_iterator old = *this;
+    ++*this;
+    return old;
+  }
+  friend bool operator==(const Filtered_index_iterator& a, const Filtered_index_iterator& b)
+  {
+    return a.facade_.id() == b.facade_.id();
+  }
+  friend bool operator!=(const Filtered_index_iterator& a, const Filtered_index_iterator& b)
+  {
+    return !(a == b);
+  }
+
+private:
+  void skip()
+  {
+    Index id = facade_.id();
+    while(id < end_ && !Accept()(*facade_.triangulation(), id)) ++id;
+    facade_ = Facade(facade_.triangulation(), id);
+  }
+
+  Facade facade_;
+  Index end_ = 0;
+};
+
+// Adapts an iterator that converts to a handle into one that yields handles
+// (CGAL's *_handles() ranges).
+template <class Base, class Handle>
+class Handle_iterator
+{
+public:
+  typedef std::forward_iterator_tag iterator_category;
+  typedef Handle value_type;
+  typedef std::ptrdiff_t difference_type;
+  typedef const Handle* pointer;
+  typedef Handle reference;
+
+  Handle_iterator() = default;
+  explicit Handle_iterator(Base base) : base_(base) {}
+  Handle operator*() const { return Handle(base_); }
+  struct Arrow { Handle h; const Handle* operator->() const { return &h; } };
+  Arrow operator->() const { return Arrow{Handle(base_)}; }
+  Handle_iterator& operator++() { ++base_; return *this; }
+  Handle_iterator operator++(int) { Handle_iterator old = *this; ++base_; return old; }
+  friend bool operator==(const Handle_iterator& a, const Handle_iterator& b) { return a.base_ == b.base_; }
+  friend bool operator!=(const Handle_iterator& a, const Handle_iterator& b) { return a.base_ != b.base_; }
+
+private:
+  Base base_;
+};
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_HANDLES_H

@@ -1,0 +1,254 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Robust orientation and in-sphere predicates on double coordinates (paper
+// §2.4 "Implementation details"), with CGAL's symbolic perturbation so that the
+// Delaunay triangulation is unique and identical to CGAL's.
+//
+// Three stages: an inline floating-point evaluation with a semi-static error
+// bound computed from the actual coordinate differences (no global state, so
+// triangulations of different extents can live side by side), then CGAL's own
+// filtered exact predicates (interval arithmetic, then exact numbers) out of
+// line.  Perturbation follows Delaunay_triangulation_3::side_of_oriented_sphere
+// and coplanar_side_of_bounded_circle of CGAL 5.5: ties are broken by the
+// lexicographic order of the points, which makes the triangulation independent
+// of the insertion order.
+//
+// Sign conventions are CGAL's: orientation(p,q,r,s) is the sign of
+// det[q-p, r-p, s-p]; side_of_oriented_sphere(p,q,r,s,t) is positive when t is
+// inside the sphere through a positively oriented p,q,r,s.
+
+#ifndef CGAL_FDT3_INTERNAL_PREDICATES_H
+#define CGAL_FDT3_INTERNAL_PREDICATES_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// Error bounds of the floating-point stages.  Both follow Shewchuk's analysis
+// of approximation "A" (which includes the rounding of the initial coordinate
+// differences): |error| <= c(eps) * permanent, eps = 2^-53, with
+//   orient3d:  c = (7 + 56 eps) eps,    permanent <= 6 * mx * my * mz
+//   insphere:  c = (16 + 224 eps) eps,  permanent <= 4 * 6 * mx * my * mz * L,
+// where mx, my, mz are the largest absolute differences per axis and
+// L = mx^2 + my^2 + mz^2 bounds every lifted coordinate.  The constants below
+// are 42 eps and 384 eps rounded up (relative margin 1e-5, far above the few
+// ulps of error made when the bound itself is evaluated and above the
+// 56 eps^2 and 224 eps^2 terms); test_predicates recomputes them.
+struct Filter_bounds
+{
+  static constexpr double unit_roundoff = 1.1102230246251565e-16; // 2^-53
+  static constexpr double orientation = 4.6630e-15;               // 42 eps = 4.66294e-15
+  static constexpr double in_sphere = 4.2634e-14;                 // 384 eps = 4.26326e-14
+  // Outside these magnitudes products may underflow or overflow and the bound
+  // above is no longer valid: the exact stage decides.
+  static constexpr double orientation_min = 1e-97, orientation_max = 1e102;
+  static constexpr double in_sphere_min = 1e-58, in_sphere_max = 1e61;
+};
+
+namespace predicates_detail {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Exact_kernel;
+typedef Exact_kernel::Point_3 Exact_point;
+
+inline Exact_point to_point(const double* p) { return Exact_point(p[0], p[1], p[2]); }
+
+// The exact stages live out of line: they are rare, and keeping them out of
+// the inline fast path keeps the walk and cavity loops small.
+__attribute__((noinline)) inline int orientation_exact(const double* p, const double* q,
+                                                       const double* r, const double* s)
+{
+  return static_cast<int>(Exact_kernel().orientation_3_object()(to_point(p), to_point(q),
+                                                                to_point(r), to_point(s)));
+}
+
+__attribute__((noinline)) inline int side_of_oriented_sphere_exact(const double* p, const double* q,
+                                                                   const double* r, const double* s,
+                                                                   const double* t)
+{
+  return static_cast<int>(Exact_kernel().side_of_oriented_sphere_3_object()(
+      to_point(p), to_point(q), to_point(r), to_point(s), to_point(t)));
+}
+
+inline bool collinear_exact(const double* p, const double* q, const double* r)
+{
+  return Exact_kernel().collinear_3_object()(to_point(p), to_point(q), to_point(r));
+}
+
+inline int coplanar_orientation_exact(const double* p, const double* q, const double* r)
+{
+  return static_cast<int>(
+      Exact_kernel().coplanar_orientation_3_object()(to_point(p), to_point(q), to_point(r)));
+}
+
+inline int coplanar_orientation_exact(const double* p, const double* q, const double* r,
+                                      const double* s)
+{
+  return static_cast<int>(Exact_kernel().coplanar_orientation_3_object()(
+      to_point(p), to_point(q), to_point(r), to_point(s)));
+}
+
+// CGAL's Bounded_side: +1 inside the circle, 0 on it, -1 outside.
+inline int coplanar_side_of_bounded_circle_exact(const double* p, const double* q, const double* r,
+                                                 const double* t)
+{
+  return static_cast<int>(Exact_kernel().coplanar_side_of_bounded_circle_3_object()(
+      to_point(p), to_point(q), to_point(r), to_point(t)));
+}
+
+} // namespace predicates_detail
+
+// Lexicographic order on (x, y, z): CGAL's Perturbation_order.
+inline bool lexicographically_smaller(const double* p, const double* q)
+{
+  if(p[0] != q[0]) return p[0] < q[0];
+  if(p[1] != q[1]) return p[1] < q[1];
+  return p[2] < q[2];
+}
+
+inline bool same_point(const double* p, const double* q)
+{
+  return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+}
+
+inline bool collinear(const double* p, const double* q, const double* r)
+{
+  return predicates_detail::collinear_exact(p, q, r);
+}
+
+// Exact sign of orientation(p, q, r, s).
+inline int orientation(const double* p, const double* q, const double* r, const double* s)
+{
+  const double qx = q[0] - p[0], qy = q[1] - p[1], qz = q[2] - p[2];
+  const double rx = r[0] - p[0], ry = r[1] - p[1], rz = r[2] - p[2];
+  const double sx = s[0] - p[0], sy = s[1] - p[1], sz = s[2] - p[2];
+  const double det = qx * (ry * sz - rz * sy) - qy * (rx * sz - rz * sx) + qz * (rx * sy - ry * sx);
+
+  const double mx = std::max(std::max(std::fabs(qx), std::fabs(rx)), std::fabs(sx));
+  const double my = std::max(std::max(std::fabs(qy), std::fabs(ry)), std::fabs(sy));
+  const double mz = std::max(std::max(std::fabs(qz), std::fabs(rz)), std::fabs(sz));
+  const double lo = std::min(std::min(mx, my), mz);
+  const double hi = std::max(std::max(mx, my), mz);
+  if(lo > Filter_bounds::orientation_min && hi < Filter_bounds::orientation_max) {
+    const double bound = Filter_bounds::orientation * mx * my * mz;
+    if(det > bound) return 1;
+    if(det < -bound) return -1;
+  }
+  return predicates_detail::orientation_exact(p, q, r, s);
+}
+
+// Exact sign of side_of_oriented_sphere(p, q, r, s, t): positive when t is
+// strictly inside the sphere of the positively oriented p, q, r, s.
+inline int side_of_oriented_sphere(const double* p, const double* q, const double* r,
+                                   const double* s, const double* t)
+{
+  const double ax = p[0] - t[0], ay = p[1] - t[1], az = p[2] - t[2];
+  const double bx = q[0] - t[0], by = q[1] - t[1], bz = q[2] - t[2];
+  const double cx = r[0] - t[0], cy = r[1] - t[1], cz = r[2] - t[2];
+  const double dx = s[0] - t[0], dy = s[1] - t[1], dz = s[2] - t[2];
+
+  const double ab = ax * by - bx * ay, bc = bx * cy - cx * by;
+  const double cd = cx * dy - dx * cy, da = dx * ay - ax * dy;
+  const double ac = ax * cy - cx * ay, bd = bx * dy - dx * by;
+
+  const double abc = az * bc - bz * ac + cz * ab;
+  const double bcd = bz * cd - cz * bd + dz * bc;
+  const double cda = cz * da + dz * ac + az * cd;
+  const double dab = dz * ab + az * bd + bz * da;
+
+  const double alift = ax * ax + ay * ay + az * az;
+  const double blift = bx * bx + by * by + bz * bz;
+  const double clift = cx * cx + cy * cy + cz * cz;
+  const double dlift = dx * dx + dy * dy + dz * dz;
+
+  // Shewchuk's insphere(p,q,r,s,t); it is positive for t inside when
+  // orient3d(p,q,r,s) > 0, i.e. when CGAL's orientation is negative.
+  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+
+  const double mx = std::max(std::max(std::fabs(ax), std::fabs(bx)), std::max(std::fabs(cx), std::fabs(dx)));
+  const double my = std::max(std::max(std::fabs(ay), std::fabs(by)), std::max(std::fabs(cy), std::fabs(dy)));
+  const double mz = std::max(std::max(std::fabs(az), std::fabs(bz)), std::max(std::fabs(cz), std::fabs(dz)));
+  const double lo = std::min(std::min(mx, my), mz);
+  const double hi = std::max(std::max(mx, my), mz);
+  if(lo > Filter_bounds::in_sphere_min && hi < Filter_bounds::in_sphere_max) {
+    const double bound = Filter_bounds::in_sphere * (mx * my * mz) * (mx * mx + my * my + mz * mz);
+    if(det > bound) return -1;
+    if(det < -bound) return 1;
+  }
+  return predicates_detail::side_of_oriented_sphere_exact(p, q, r, s, t);
+}
+
+// CGAL's Delaunay_triangulation_3::side_of_oriented_sphere(..., perturb = true):
+// never zero for distinct points.  p0..p3 positively oriented.
+inline int perturbed_side_of_oriented_sphere(const double* p0, const double* p1, const double* p2,
+                                             const double* p3, const double* p)
+{
+  const int side = side_of_oriented_sphere(p0, p1, p2, p3, p);
+  if(side != 0) return side;
+
+  const double* points[5] = {p0, p1, p2, p3, p};
+  std::sort(points, points + 5, lexicographically_smaller);
+  // The perturbation is a polynomial in an infinitesimal whose monomials are
+  // ranked by the lexicographic order; the two largest points decide
+  // (Devillers & Teillaud, "Perturbations for Delaunay and weighted Delaunay 3D
+  // triangulations", 2011).
+  for(int i = 4; i > 2; --i) {
+    if(points[i] == p) return -1;
+    int o = 0;
+    if(points[i] == p3 && (o = orientation(p0, p1, p2, p)) != 0) return o;
+    if(points[i] == p2 && (o = orientation(p0, p1, p, p3)) != 0) return o;
+    if(points[i] == p1 && (o = orientation(p0, p, p2, p3)) != 0) return o;
+    if(points[i] == p0 && (o = orientation(p, p1, p2, p3)) != 0) return o;
+  }
+  CGAL_assertion_msg(false, "perturbation did not decide: duplicate points?");
+  return -1;
+}
+
+// CGAL's coplanar_side_of_bounded_circle(..., perturb = true) for coplanar
+// p0, p1, p2, p (p0, p1, p2 not collinear): +1 inside, -1 outside.
+inline int perturbed_coplanar_side_of_bounded_circle(const double* p0, const double* p1,
+                                                     const double* p2, const double* p)
+{
+  using namespace predicates_detail;
+  const int side = coplanar_side_of_bounded_circle_exact(p0, p1, p2, p);
+  if(side != 0) return side;
+
+  const double* points[4] = {p0, p1, p2, p};
+  std::sort(points, points + 4, lexicographically_smaller);
+  const int local = coplanar_orientation_exact(p0, p1, p2);
+  for(int i = 3; i > 0; --i) {
+    if(points[i] == p) return -1;
+    int o = 0;
+    if(points[i] == p2 && (o = coplanar_orientation_exact(p0, p1, p)) != 0) return o * local;
+    if(points[i] == p1 && (o = coplanar_orientation_exact(p0, p, p2)) != 0) return o * local;
+    if(points[i] == p0 && (o = coplanar_orientation_exact(p, p1, p2)) != 0) return o * local;
+  }
+  return -local;
+}
+
+// Conflict test of a finite tetrahedron (positively oriented a, b, c, d).
+inline bool finite_cell_in_conflict(const double* a, const double* b, const double* c,
+                                    const double* d, const double* p)
+{
+  return perturbed_side_of_oriented_sphere(a, b, c, d, p) > 0;
+}
+
+// Conflict test of a ghost tetrahedron (a, b, c, infinite): its "sphere" is
+// the open half-space beyond the hull facet a, b, c, closed by CGAL's
+// perturbed in-circle test inside the facet's plane.
+inline bool ghost_cell_in_conflict(const double* a, const double* b, const double* c,
+                                   const double* p)
+{
+  const int o = orientation(a, b, c, p);
+  if(o != 0) return o > 0;
+  return perturbed_coplanar_side_of_bounded_circle(a, b, c, p) > 0;
+}
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_PREDICATES_H

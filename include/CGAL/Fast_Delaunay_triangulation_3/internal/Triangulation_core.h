@@ -1,0 +1,387 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The triangulation without CGAL types: flat arrays, the dimension, and the
+// main insertion loop of Algorithm 1 (INIT, SORT, then WALK / CAVITY /
+// DELAUNAYBALL per point).  The public class template wraps it with handles
+// and iterators; data flows one way: points -> sort -> kernel -> arrays.
+//
+// Dimensions below 3: only the (distinct) vertices are stored, no cells; the
+// first insertion that makes the points span 3D builds the triangulation of
+// all of them.  Vertex ids never change once given, except that a bulk
+// insertion removes its own duplicates before returning.
+
+#ifndef CGAL_FDT3_INTERNAL_TRIANGULATION_CORE_H
+#define CGAL_FDT3_INTERNAL_TRIANGULATION_CORE_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/BRIO.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// Timings of the last bulk insertion, in the paper's Table 1 breakdown.
+struct Insertion_report
+{
+  std::size_t points = 0;
+  double sort_seconds = 0, init_seconds = 0, insertion_seconds = 0, finish_seconds = 0;
+  Kernel_statistics kernel;
+};
+
+class Triangulation_core
+{
+public:
+  Flat_storage mesh;
+  int dimension = -1;
+  std::uint64_t seed = 0;
+  bool timed = false; // per-phase times (costs two clock reads per phase and point)
+  Insertion_report last_report;
+
+  std::size_t number_of_vertices() const { return mesh.vertices.size(); }
+
+  void clear()
+  {
+    mesh.clear();
+    dimension = -1;
+    hint_ = 0;
+  }
+
+  // Throws std::invalid_argument naming the first non-finite coordinate.
+  static void check_finite(const double* xyz, std::size_t n)
+  {
+    for(std::size_t i = 0; i < 3 * n; ++i) {
+      if(!std::isfinite(xyz[i])) {
+        std::ostringstream message;
+        message << "Fast_Delaunay_triangulation_3: point #" << i / 3 << " of the input has a "
+                << (std::isnan(xyz[i]) ? "NaN" : "infinite") << " coordinate";
+        throw std::invalid_argument(message.str());
+      }
+    }
+  }
+
+  // Inserts n points given as x, y, z triples (already checked finite).
+  // vertex_of_input, if not null, receives for every input point the id of
+  // its vertex (an older vertex for a duplicate).  Returns the number of new
+  // vertices.
+  std::size_t insert(const double* xyz, std::size_t n, std::vector<Vertex_id>* vertex_of_input)
+  {
+    last_report = Insertion_report();
+    last_report.points = n;
+    if(n == 0) {
+      if(vertex_of_input) vertex_of_input->clear();
+      return 0;
+    }
+    if(number_of_vertices() + n > max_vertices)
+      throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^32 - 2 vertices");
+
+    const Clock::time_point t0 = Clock::now();
+    const std::size_t first_new = number_of_vertices();
+    Brio_order order = brio_order(xyz, n, seed);
+    mesh.vertices.resize(first_new + n);
+    for(std::size_t i = 0; i < n; ++i) {
+      Vertex_record& r = mesh.vertices[first_new + i];
+      const double* p = xyz + 3 * std::size_t(order.order[i]);
+      r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
+      r.scratch = 0;
+    }
+    const Clock::time_point t1 = Clock::now();
+    last_report.sort_seconds = seconds(t0, t1);
+
+    // duplicate_of[i]: the vertex that new vertex first_new + i duplicates, or
+    // ghost_vertex if it is a genuine new vertex.
+    std::vector<Vertex_id> duplicate_of(n, ghost_vertex);
+    if(dimension == 3) {
+      mesh.reserve_tets(expected_tets(n));
+      insert_range(first_new, first_new + n, first_new, duplicate_of);
+    } else {
+      build_or_stay_low_dimensional(first_new, duplicate_of);
+    }
+    const Clock::time_point t2 = Clock::now();
+    const std::size_t added = remove_duplicates(first_new, duplicate_of);
+    if(vertex_of_input) {
+      vertex_of_input->resize(n);
+      for(std::size_t i = 0; i < n; ++i)
+        (*vertex_of_input)[order.order[i]] = duplicate_of[i];
+    }
+    last_report.finish_seconds = seconds(t2, Clock::now());
+    return added;
+  }
+
+  // Inserts one point; returns its vertex id (an older one for a duplicate).
+  Vertex_id insert_one(const double* p)
+  {
+    std::vector<Vertex_id> id;
+    insert(p, 1, &id);
+    return id[0];
+  }
+
+  // Exact validity: combinatorics, orientation and the (perturbed) local
+  // Delaunay property on every facet.  Writes the first problem to `why`.
+  bool is_valid(std::string* why = nullptr) const;
+
+private:
+  typedef std::chrono::steady_clock Clock;
+  static double seconds(Clock::time_point a, Clock::time_point b)
+  {
+    return std::chrono::duration<double>(b - a).count();
+  }
+
+  // 6.75 tetrahedra per vertex in the Poisson limit, ghosts included.
+  static std::size_t expected_tets(std::size_t n) { return n * 27 / 4 + n / 16 + 64; }
+
+  // Inserts vertices [begin, end) in order, skipping those in `skip`.
+  void insert_range(Vertex_id begin, Vertex_id end, Vertex_id first_new,
+                    std::vector<Vertex_id>& duplicate_of, const Vertex_id* skip = nullptr)
+  {
+    Insertion_scratch scratch;
+    scratch.timed = timed;
+    Delaunay_kernel kernel(mesh, scratch);
+    if(!mesh.is_live(hint_)) hint_ = first_live_tet();
+    const Clock::time_point t0 = Clock::now();
+    for(Vertex_id v = begin; v < end; ++v) {
+      if(skip && (v == skip[0] || v == skip[1] || v == skip[2] || v == skip[3])) continue;
+      Vertex_id existing = ghost_vertex;
+      if(kernel.insert(v, hint_, existing) == Insertion_result::duplicate) {
+        CGAL_assertion(v >= first_new);
+        duplicate_of[v - first_new] = existing;
+      }
+    }
+    last_report.insertion_seconds += seconds(t0, Clock::now());
+    last_report.kernel.add(scratch.stats);
+  }
+
+  Tet_id first_live_tet() const
+  {
+    for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
+      if(mesh.is_live(t)) return t;
+    return 0;
+  }
+
+  // Dimension < 3 before this insertion: find four affinely independent
+  // vertices (exactly) among all vertices; if they exist, build the 3D
+  // triangulation of everything, else only deduplicate.
+  void build_or_stay_low_dimensional(Vertex_id first_new, std::vector<Vertex_id>& duplicate_of)
+  {
+    const Clock::time_point t0 = Clock::now();
+    const Vertex_id count = static_cast<Vertex_id>(number_of_vertices());
+    Vertex_id simplex[4];
+    const int spanned = affine_independent_vertices(count, simplex);
+    if(spanned < 3) {
+      mark_duplicates_by_sorting(first_new, duplicate_of);
+      dimension = spanned;
+      last_report.init_seconds = seconds(t0, Clock::now());
+      return;
+    }
+    create_initial_tetrahedron(simplex);
+    dimension = 3;
+    last_report.init_seconds = seconds(t0, Clock::now());
+    mesh.reserve_tets(expected_tets(count));
+    insert_range(0, count, first_new, duplicate_of, simplex);
+  }
+
+  // The dimension of the affine hull of vertices [0, count) (-1 if empty),
+  // and vertices spanning it in simplex[0..dimension].
+  int affine_independent_vertices(Vertex_id count, Vertex_id simplex[4]) const
+  {
+    if(count == 0) return -1;
+    simplex[0] = 0;
+    Vertex_id v = 1;
+    for(; v < count && same_point(mesh.point(v), mesh.point(simplex[0])); ++v) {}
+    if(v == count) return 0;
+    simplex[1] = v;
+    for(++v; v < count && collinear(mesh.point(simplex[0]), mesh.point(simplex[1]), mesh.point(v)); ++v) {}
+    if(v >= count) return 1;
+    simplex[2] = v;
+    for(++v; v < count && orientation(mesh.point(simplex[0]), mesh.point(simplex[1]),
+                                      mesh.point(simplex[2]), mesh.point(v)) == 0; ++v) {}
+    if(v >= count) return 2;
+    simplex[3] = v;
+    return 3;
+  }
+
+  // One finite tetrahedron and its four ghosts; adjacency by matching facets.
+  void create_initial_tetrahedron(Vertex_id simplex[4])
+  {
+    if(orientation(mesh.point(simplex[0]), mesh.point(simplex[1]), mesh.point(simplex[2]),
+                   mesh.point(simplex[3])) < 0)
+      std::swap(simplex[2], simplex[3]);
+    mesh.free_tets.clear();
+    mesh.tet_vertices.clear();
+    mesh.tet_neighbors.clear();
+    mesh.tet_flags.clear();
+    Tet_id tets[5];
+    for(Tet_id& t : tets) t = mesh.new_tet();
+    for(int i = 0; i < 4; ++i) mesh.tet_vertices[i] = simplex[i];
+    // The ghost on facet f sees that facet from outside: (a, b, c, ghost) with
+    // (a, b, c) = facet_vertex[f], an even permutation of the reversed facet.
+    for(int f = 0; f < 4; ++f) {
+      Vertex_id* g = &mesh.tet_vertices[4 * (f + 1)];
+      for(int k = 0; k < 3; ++k) g[k] = simplex[facet_vertex[f][k]];
+      g[3] = ghost_vertex;
+    }
+    for(int t = 0; t < 5; ++t) {
+      mesh.tet_flags[t] = 0;
+      for(int i = 0; i < 4; ++i) mesh.tet_neighbors[4 * t + i] = match_facet(t, i);
+    }
+    mesh.live_tets = 5;
+    mesh.ghost_tets = 4;
+    hint_ = 0;
+  }
+
+  // Facet code among the first five tetrahedra sharing facet i of t.
+  Facet_code match_facet(int t, int i) const
+  {
+    Vertex_id mine[3];
+    for(int k = 0, j = 0; k < 4; ++k)
+      if(k != i) mine[j++] = mesh.tet_vertices[4 * t + k];
+    std::sort(mine, mine + 3);
+    for(int u = 0; u < 5; ++u) {
+      if(u == t) continue;
+      for(int j = 0; j < 4; ++j) {
+        Vertex_id other[3];
+        for(int k = 0, l = 0; k < 4; ++k)
+          if(k != j) other[l++] = mesh.tet_vertices[4 * u + k];
+        std::sort(other, other + 3);
+        if(std::equal(mine, mine + 3, other)) return facet_code(u, j);
+      }
+    }
+    CGAL_assertion_msg(false, "initial tetrahedra do not close up");
+    return 0;
+  }
+
+  void mark_duplicates_by_sorting(Vertex_id first_new, std::vector<Vertex_id>& duplicate_of) const
+  {
+    std::vector<Vertex_id> ids(number_of_vertices());
+    std::iota(ids.begin(), ids.end(), Vertex_id(0));
+    std::stable_sort(ids.begin(), ids.end(), [this](Vertex_id a, Vertex_id b) {
+      return lexicographically_smaller(mesh.point(a), mesh.point(b));
+    });
+    // Older vertices come first among equal points (stable sort by id).
+    for(std::size_t k = 1; k < ids.size(); ++k) {
+      std::size_t j = k;
+      while(j > 0 && same_point(mesh.point(ids[j - 1]), mesh.point(ids[k]))) --j;
+      if(j != k) {
+        CGAL_assertion(ids[k] >= first_new);
+        duplicate_of[ids[k] - first_new] = ids[j];
+      }
+    }
+  }
+
+  // Drops the duplicate vertex records of the last insertion, renumbering
+  // the new vertices; turns duplicate_of into the final id of every new
+  // vertex.  Returns the number of vertices added.
+  std::size_t remove_duplicates(Vertex_id first_new, std::vector<Vertex_id>& duplicate_of)
+  {
+    const std::size_t n = duplicate_of.size();
+    std::vector<Vertex_id> new_id(n);
+    Vertex_id next = first_new;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(duplicate_of[i] == ghost_vertex) {
+        if(next != first_new + i) mesh.vertices[next] = mesh.vertices[first_new + i];
+        new_id[i] = next++;
+      }
+    }
+    const std::size_t added = next - first_new;
+    auto final_id = [&](Vertex_id v) { return v < first_new ? v : new_id[v - first_new]; };
+    if(added != n) {
+      mesh.vertices.resize(next);
+      for(std::size_t k = 0; k < mesh.tet_vertices.size(); ++k) {
+        const Vertex_id v = mesh.tet_vertices[k];
+        if(v != ghost_vertex && v >= first_new) mesh.tet_vertices[k] = new_id[v - first_new];
+      }
+    }
+    for(std::size_t i = 0; i < n; ++i)
+      duplicate_of[i] = duplicate_of[i] == ghost_vertex ? new_id[i] : final_id(duplicate_of[i]);
+    return added;
+  }
+
+  Tet_id hint_ = 0;
+};
+
+inline bool Triangulation_core::is_valid(std::string* why) const
+{
+  auto fail = [why](const std::string& message) {
+    if(why) *why = message;
+    return false;
+  };
+  if(dimension < 3) {
+    if(mesh.live_tets != 0) return fail("cells stored in dimension < 3");
+    return true;
+  }
+  const Flat_storage& m = mesh;
+  std::size_t live = 0, ghosts = 0;
+  std::vector<char> used(number_of_vertices(), 0);
+  for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+    if(!m.is_live(t)) continue;
+    ++live;
+    const std::string at = "tetrahedron " + std::to_string(t) + ": ";
+    for(int i = 0; i < 4; ++i) {
+      const Vertex_id v = m.vertex(t, i);
+      if(v == ghost_vertex) {
+        if(i != 3) return fail(at + "ghost vertex not in slot 3");
+        continue;
+      }
+      if(v >= number_of_vertices()) return fail(at + "vertex id out of range");
+      used[v] = 1;
+      for(int j = 0; j < i; ++j)
+        if(m.vertex(t, j) == v) return fail(at + "repeated vertex");
+    }
+    for(int i = 0; i < 4; ++i) {
+      const Facet_code code = m.neighbor_code(t, i);
+      if(tet_of(code) >= m.number_of_slots() || !m.is_live(tet_of(code)))
+        return fail(at + "neighbour is not a live tetrahedron");
+      if(m.tet_neighbors[code] != facet_code(t, i)) return fail(at + "asymmetric adjacency");
+      // Same facet, seen reversed from the other side.
+      Vertex_id mine[3], other[3];
+      for(int k = 0, a = 0, b = 0; k < 4; ++k) {
+        if(k != i) mine[a++] = m.vertex(t, k);
+        if(k != facet_of(code)) other[b++] = m.vertex(tet_of(code), k);
+      }
+      std::sort(mine, mine + 3);
+      std::sort(other, other + 3);
+      if(!std::equal(mine, mine + 3, other)) return fail(at + "neighbours do not share the facet");
+    }
+    if(m.is_ghost(t)) {
+      ++ghosts;
+      if(m.is_ghost(m.neighbor(t, 3))) return fail(at + "ghost tetrahedron on a ghost facet");
+      continue;
+    }
+    const double* p[4] = {m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)),
+                          m.point(m.vertex(t, 2)), m.point(m.vertex(t, 3))};
+    if(orientation(p[0], p[1], p[2], p[3]) <= 0) return fail(at + "not positively oriented");
+    for(int i = 0; i < 4; ++i) {
+      const Facet_code code = m.neighbor_code(t, i);
+      const Vertex_id opposite = m.vertex(tet_of(code), facet_of(code));
+      if(opposite == ghost_vertex) {
+        // Hull facet: the ghost must see it from outside.
+        const Tet_id g = tet_of(code);
+        if(orientation(m.point(m.vertex(g, 0)), m.point(m.vertex(g, 1)), m.point(m.vertex(g, 2)),
+                       p[i]) >= 0)
+          return fail(at + "hull facet seen from the wrong side");
+        continue;
+      }
+      if(finite_cell_in_conflict(p[0], p[1], p[2], p[3], m.point(opposite)))
+        return fail(at + "not locally Delaunay across facet " + std::to_string(i));
+    }
+  }
+  if(live != m.live_tets || ghosts != m.ghost_tets) return fail("tetrahedron counts out of date");
+  for(std::size_t v = 0; v < used.size(); ++v)
+    if(!used[v]) return fail("vertex " + std::to_string(v) + " is in no tetrahedron");
+  return true;
+}
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_TRIANGULATION_CORE_H

@@ -1,0 +1,137 @@
+// Point distributions shared by the tests and the benchmarks: uniform,
+// Gaussian, clustered, on a sphere, shuffled integer grid, with duplicates,
+// far from the origin, tiny.  Deterministic for a given seed.
+#ifndef CGAL_FDT3_TEST_POINT_SETS_H
+#define CGAL_FDT3_TEST_POINT_SETS_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fdt3_test {
+
+struct Xyz { double x, y, z; };
+
+inline std::vector<Xyz> uniform_points(std::size_t n, std::uint64_t seed = 1)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Xyz> p(n);
+  for(Xyz& q : p) q = {u(rng), u(rng), u(rng)};
+  return p;
+}
+
+inline std::vector<Xyz> gaussian_points(std::size_t n, std::uint64_t seed = 2)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<Xyz> p(n);
+  for(Xyz& q : p) q = {g(rng), g(rng), g(rng)};
+  return p;
+}
+
+// 20 tight Gaussian blobs (sigma 1e-3) at uniform random centres.
+inline std::vector<Xyz> clustered_points(std::size_t n, std::uint64_t seed = 3)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g(0.0, 1e-3);
+  Xyz centre[20];
+  for(Xyz& c : centre) c = {u(rng), u(rng), u(rng)};
+  std::vector<Xyz> p(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    const Xyz& c = centre[i % 20];
+    p[i] = {c.x + g(rng), c.y + g(rng), c.z + g(rng)};
+  }
+  return p;
+}
+
+// On the unit sphere (rounded to doubles, so only nearly cospherical).
+inline std::vector<Xyz> sphere_points(std::size_t n, std::uint64_t seed = 4)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<Xyz> p(n);
+  for(Xyz& q : p) {
+    double x, y, z, r;
+    do { x = g(rng); y = g(rng); z = g(rng); r = std::sqrt(x * x + y * y + z * z); } while(r < 1e-9);
+    q = {x / r, y / r, z / r};
+  }
+  return p;
+}
+
+// The k x k x k integer grid (exactly cospherical and coplanar subsets), shuffled.
+inline std::vector<Xyz> grid_points(std::size_t n, std::uint64_t seed = 5)
+{
+  const int k = std::max(2, static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n)))));
+  std::vector<Xyz> p;
+  p.reserve(static_cast<std::size_t>(k) * k * k);
+  for(int i = 0; i < k; ++i)
+    for(int j = 0; j < k; ++j)
+      for(int l = 0; l < k; ++l) p.push_back({double(i), double(j), double(l)});
+  std::mt19937_64 rng(seed);
+  std::shuffle(p.begin(), p.end(), rng);
+  p.resize(std::min(p.size(), n));
+  return p;
+}
+
+// Uniform points, each present twice or three times, shuffled.
+inline std::vector<Xyz> duplicated_points(std::size_t n, std::uint64_t seed = 6)
+{
+  std::vector<Xyz> base = uniform_points((n + 1) / 2, seed);
+  std::vector<Xyz> p = base;
+  p.insert(p.end(), base.begin(), base.end());
+  p.insert(p.end(), base.begin(), base.begin() + base.size() / 4);
+  std::mt19937_64 rng(seed);
+  std::shuffle(p.begin(), p.end(), rng);
+  return p;
+}
+
+inline std::vector<Xyz> offset_points(std::size_t n, double offset = 1e9, std::uint64_t seed = 7)
+{
+  std::vector<Xyz> p = uniform_points(n, seed);
+  for(Xyz& q : p) q = {q.x + offset, q.y + offset, q.z + offset};
+  return p;
+}
+
+inline std::vector<Xyz> scaled_points(std::size_t n, double scale = 1e-9, std::uint64_t seed = 8)
+{
+  std::vector<Xyz> p = uniform_points(n, seed);
+  for(Xyz& q : p) q = {q.x * scale, q.y * scale, q.z * scale};
+  return p;
+}
+
+inline std::vector<std::string> distribution_names()
+{
+  return {"uniform", "gauss", "clusters", "sphere", "grid"};
+}
+
+inline std::vector<Xyz> make_points(const std::string& name, std::size_t n, std::uint64_t seed = 1)
+{
+  if(name == "uniform") return uniform_points(n, seed);
+  if(name == "gauss") return gaussian_points(n, seed + 1);
+  if(name == "clusters") return clustered_points(n, seed + 2);
+  if(name == "sphere") return sphere_points(n, seed + 3);
+  if(name == "grid") return grid_points(n, seed + 4);
+  if(name == "duplicates") return duplicated_points(n, seed + 5);
+  if(name == "offset") return offset_points(n, 1e9, seed + 6);
+  if(name == "tiny") return scaled_points(n, 1e-9, seed + 7);
+  throw std::invalid_argument("unknown distribution '" + name + "'");
+}
+
+template <class Point>
+std::vector<Point> to_points(const std::vector<Xyz>& xyz)
+{
+  std::vector<Point> p;
+  p.reserve(xyz.size());
+  for(const Xyz& q : xyz) p.emplace_back(q.x, q.y, q.z);
+  return p;
+}
+
+} // namespace fdt3_test
+
+#endif

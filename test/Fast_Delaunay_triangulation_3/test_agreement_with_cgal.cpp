@@ -1,0 +1,50 @@
+// For every distribution, degenerate ones included, the finite cells are
+// exactly those of CGAL::Delaunay_triangulation_3 on the same points, and the
+// triangulation passes independent checks.
+#include "triangulation_checks.h"
+
+#include <CGAL/Fast_Delaunay_triangulation_3.h>
+
+using namespace fdt3_test;
+typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
+
+namespace {
+
+struct Case { std::string distribution; std::size_t n; };
+
+class Agreement : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Agreement, SameCellsAsCgal)
+{
+  const Case c = GetParam();
+  const std::vector<Point> points = to_points<Point>(make_points(c.distribution, c.n));
+  Fast_dt fast(points.begin(), points.end());
+  Cgal_dt cgal(points.begin(), points.end());
+
+  ASSERT_TRUE(fast.is_valid(true));
+  EXPECT_EQ(fast.dimension(), cgal.dimension());
+  EXPECT_EQ(fast.number_of_vertices(), cgal.number_of_vertices());
+  EXPECT_EQ(fast.number_of_finite_cells(), cgal.number_of_finite_cells());
+  EXPECT_EQ(fast.number_of_cells(), cgal.number_of_cells());
+  EXPECT_EQ(fast.number_of_finite_facets(), cgal.number_of_finite_facets());
+  EXPECT_EQ(fast.number_of_finite_edges(), cgal.number_of_finite_edges());
+  EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+  expect_locally_delaunay(fast);
+  expect_volume_of_hull(fast, points);
+}
+
+std::vector<Case> cases()
+{
+  std::vector<Case> all;
+  for(const char* d : {"uniform", "gauss", "clusters", "sphere", "grid", "duplicates", "offset", "tiny"})
+    for(std::size_t n : {std::size_t(20), std::size_t(500), std::size_t(20000)})
+      all.push_back({d, n});
+  return all;
+}
+
+INSTANTIATE_TEST_SUITE_P(Distributions, Agreement, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return info.param.distribution + "_" + std::to_string(info.param.n);
+                         });
+
+} // namespace

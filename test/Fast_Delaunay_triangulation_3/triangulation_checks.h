@@ -1,0 +1,115 @@
+// Independent checks of a triangulation, used by several tests: the finite
+// cells as sorted point 4-tuples (comparable with CGAL's), exact orientation,
+// adjacency symmetry, local Delaunay property, volume = convex hull volume.
+#ifndef CGAL_FDT3_TEST_TRIANGULATION_CHECKS_H
+#define CGAL_FDT3_TEST_TRIANGULATION_CHECKS_H
+
+#include "point_sets.h"
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Cartesian_converter.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/convex_hull_3.h>
+#include <CGAL/Polyhedron_3.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <set>
+#include <tuple>
+#include <vector>
+
+namespace fdt3_test {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Delaunay_triangulation_3<K> Cgal_dt;
+
+// A cell as its four points sorted lexicographically: independent of vertex
+// numbering, so cells of two triangulations can be compared.
+typedef std::array<std::tuple<double, double, double>, 4> Cell_key;
+
+template <class Tr>
+std::vector<Cell_key> finite_cell_keys(const Tr& tr)
+{
+  std::vector<Cell_key> keys;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+    Cell_key k;
+    for(int i = 0; i < 4; ++i) {
+      const Point p = c->vertex(i)->point();
+      k[i] = std::make_tuple(p.x(), p.y(), p.z());
+    }
+    std::sort(k.begin(), k.end());
+    keys.push_back(k);
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+// Orientation, adjacency symmetry and local Delaunay property checked with
+// CGAL's exact predicates and CGAL's perturbed in-sphere test, through the
+// public handle interface only.
+template <class Tr>
+void expect_locally_delaunay(const Tr& tr)
+{
+  const K k;
+  // CGAL's perturbed in-sphere test on points is protected: reach it from a derived class.
+  struct Oracle : Cgal_dt { using Cgal_dt::side_of_oriented_sphere; } oracle;
+  std::size_t checked = 0;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+    const Point p0 = c->vertex(0)->point(), p1 = c->vertex(1)->point(), p2 = c->vertex(2)->point(),
+                p3 = c->vertex(3)->point();
+    ASSERT_EQ(k.orientation_3_object()(p0, p1, p2, p3), CGAL::POSITIVE);
+    for(int i = 0; i < 4; ++i) {
+      auto n = c->neighbor(i);
+      const int j = tr.mirror_index(typename Tr::Cell_handle(c), i);
+      ASSERT_EQ(n->neighbor(j), typename Tr::Cell_handle(c)) << "adjacency not symmetric";
+      for(int l = 0; l < 4; ++l)
+        if(l != i) ASSERT_TRUE(n->has_vertex(c->vertex(l)));
+      if(tr.is_infinite(n->vertex(j))) continue;
+      const Point q = n->vertex(j)->point();
+      ASSERT_NE(oracle.side_of_oriented_sphere(p0, p1, p2, p3, q, true), CGAL::ON_POSITIVE_SIDE)
+          << "not locally Delaunay";
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked + (tr.number_of_finite_cells() == 1 ? 1 : 0), 0u);
+}
+
+// Sum of the cells' exact volumes equals the exact volume of the convex hull
+// (CGAL::convex_hull_3, exact predicates; volumes in exact rationals).
+template <class Tr>
+void expect_volume_of_hull(const Tr& tr, const std::vector<Point>& points)
+{
+  typedef CGAL::Simple_cartesian<CGAL::Exact_rational> EK;
+  typedef EK::Point_3 EP;
+  CGAL::Cartesian_converter<K, EK> to_exact;
+  EK::FT volume = 0;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c)
+    volume += CGAL::volume(to_exact(c->vertex(0)->point()), to_exact(c->vertex(1)->point()),
+                           to_exact(c->vertex(2)->point()), to_exact(c->vertex(3)->point()));
+  CGAL::Polyhedron_3<K> hull;
+  CGAL::convex_hull_3(points.begin(), points.end(), hull);
+  EK::FT hull_volume = 0;
+  const EP origin = to_exact(points.front());
+  for(auto f = hull.facets_begin(); f != hull.facets_end(); ++f) {
+    auto h = f->facet_begin();
+    const EP a = to_exact(h->vertex()->point());
+    ++h;
+    EP b = to_exact(h->vertex()->point());
+    for(++h; h != f->facet_begin(); ++h) {
+      const EP c = to_exact(h->vertex()->point());
+      hull_volume += CGAL::volume(origin, a, b, c);
+      b = c;
+    }
+  }
+  EXPECT_TRUE(volume == hull_volume) << CGAL::to_double(volume) << " vs " << CGAL::to_double(hull_volume);
+}
+
+} // namespace fdt3_test
+
+#endif
