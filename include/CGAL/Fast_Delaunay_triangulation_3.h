@@ -290,6 +290,10 @@ public:
   // Per-phase timings of insertions (sort, walk, cavity, ball), see last_insertion_report().
   void set_phase_timing(bool on) { core_.timed = on; }
   const Insertion_report& last_insertion_report() const { return core_.last_report; }
+  // Cache the in-sphere sub-determinants of the paper's §2.4 (32 more bytes
+  // per cell); off by default, see Sub_determinants.h for the measurement.
+  void set_sub_determinants(bool on) { core_.set_sub_determinants(on); }
+  bool sub_determinants() const { return core_.sub_determinants(); }
 
   // ---------------------------------------------------------------- insertion
   // Inserts the points of [first, last); returns the number of new vertices.
@@ -401,10 +405,8 @@ public:
   Finite_cells_iterator finite_cells_end() const { return Finite_cells_iterator(this, cell_slots(), cell_slots()); }
 
   All_vertices_iterator all_vertices_begin() const { return All_vertices_iterator(this, 0); }
-  All_vertices_iterator all_vertices_end() const
-  {
-    return All_vertices_iterator(this, dimension() < 0 ? 0 : number_of_vertices() + 1);
-  }
+  // The infinite vertex exists even in the empty triangulation, as in CGAL.
+  All_vertices_iterator all_vertices_end() const { return All_vertices_iterator(this, number_of_vertices() + 1); }
   All_vertices_iterator vertices_begin() const { return all_vertices_begin(); }
   All_vertices_iterator vertices_end() const { return all_vertices_end(); }
   Finite_vertices_iterator finite_vertices_begin() const

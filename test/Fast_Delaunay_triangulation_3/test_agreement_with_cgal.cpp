@@ -48,3 +48,41 @@ INSTANTIATE_TEST_SUITE_P(Distributions, Agreement, ::testing::ValuesIn(cases()),
                          });
 
 } // namespace
+
+namespace {
+
+// The cached sub-determinants (paper §2.4) only change how the conflict test
+// is evaluated: cells must still be CGAL's, degenerate inputs included.
+class Sub_determinants : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Sub_determinants, SameCellsAsCgal)
+{
+  const std::vector<Point> points = to_points<Point>(make_points(GetParam(), 5000));
+  Fast_dt fast;
+  fast.set_sub_determinants(true);
+  ASSERT_TRUE(fast.sub_determinants());
+  fast.insert(points.begin(), points.begin() + points.size() / 2);
+  fast.insert(points.begin() + points.size() / 2, points.end());
+  const Cgal_dt cgal(points.begin(), points.end());
+  ASSERT_TRUE(fast.is_valid(true));
+  EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+}
+
+TEST(Sub_determinants, SwitchedOnAfterConstruction)
+{
+  const std::vector<Point> points = to_points<Point>(make_points("grid", 3000));
+  Fast_dt fast(points.begin(), points.begin() + 1000);
+  fast.set_sub_determinants(true);
+  fast.insert(points.begin() + 1000, points.end());
+  fast.set_sub_determinants(false);
+  fast.insert(Point(0.5, 0.5, 0.5));
+  Cgal_dt cgal(points.begin(), points.end());
+  cgal.insert(Point(0.5, 0.5, 0.5));
+  ASSERT_TRUE(fast.is_valid(true));
+  EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+}
+
+INSTANTIATE_TEST_SUITE_P(Distributions, Sub_determinants,
+                         ::testing::Values("uniform", "clusters", "sphere", "grid", "duplicates", "offset", "tiny"));
+
+} // namespace

@@ -62,7 +62,7 @@ std::vector<std::uint64_t> moore_keys_of(const std::vector<double>& xyz)
       lo[a] = std::min(lo[a], xyz[3 * i + a]);
       hi[a] = std::max(hi[a], xyz[3 * i + a]);
     }
-  const int bits = moore_bits_per_axis(n);
+  const int bits = brio_bits_per_axis(n);
   const Moore_grid grid(lo, hi, bits);
   const Moore_curve curve(bits);
   std::vector<std::uint64_t> keys(n);

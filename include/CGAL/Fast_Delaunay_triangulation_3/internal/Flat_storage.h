@@ -146,23 +146,42 @@ struct Vertex_record
 };
 static_assert(sizeof(Vertex_record) == 32, "a vertex record is half a cache line");
 
-enum Tet_flag : std::uint8_t {
-  tet_deleted = 1,     // slot free, or in the cavity being carved
-  tet_outside = 2,     // tested outside the current cavity (cleared after the insertion)
+// A scoped enum, not a plain byte: writes through unsigned char may alias
+// anything, which would make the compiler reload every array pointer in the
+// cavity loop after each flag write.
+enum class Tet_flags : std::uint8_t {
+  none = 0,
+  deleted = 1,  // slot free, or in the cavity being carved
+  outside = 2,  // tested outside the current cavity (cleared after the insertion)
 };
+inline Tet_flags operator|(Tet_flags a, Tet_flags b)
+{
+  return static_cast<Tet_flags>(static_cast<std::uint8_t>(a) | static_cast<std::uint8_t>(b));
+}
+inline Tet_flags without(Tet_flags a, Tet_flags b)
+{
+  return static_cast<Tet_flags>(static_cast<std::uint8_t>(a) & ~static_cast<std::uint8_t>(b));
+}
+inline bool has(Tet_flags a, Tet_flags b)
+{
+  return (static_cast<std::uint8_t>(a) & static_cast<std::uint8_t>(b)) != 0;
+}
 
 struct Flat_storage
 {
   Raw_array<Vertex_record> vertices;
   Raw_array<Vertex_id> tet_vertices;   // 4 per tetrahedron
   Raw_array<Facet_code> tet_neighbors; // 4 per tetrahedron
-  Raw_array<std::uint8_t> tet_flags;   // 1 per tetrahedron
+  Raw_array<Tet_flags> tet_flags;     // 1 per tetrahedron
+  // 4 per tetrahedron when sub-determinants are on (Sub_determinants.h), else empty.
+  Raw_array<double> tet_sub_determinants;
+  bool with_sub_determinants = false;
   std::vector<Tet_id> free_tets;       // deleted slots available for reuse
   std::size_t live_tets = 0;           // slots in use (finite and ghost)
   std::size_t ghost_tets = 0;          // slots in use that have the ghost vertex
 
   std::size_t number_of_slots() const { return tet_flags.size(); }
-  bool is_live(Tet_id t) const { return (tet_flags[t] & tet_deleted) == 0; }
+  bool is_live(Tet_id t) const { return !has(tet_flags[t], Tet_flags::deleted); }
   bool is_ghost(Tet_id t) const { return tet_vertices[4 * t + 3] == ghost_vertex; }
   const double* point(Vertex_id v) const { return vertices[v].xyz; }
   Vertex_id vertex(Tet_id t, int i) const { return tet_vertices[4 * t + i]; }
@@ -175,6 +194,7 @@ struct Flat_storage
     tet_vertices.clear();
     tet_neighbors.clear();
     tet_flags.clear();
+    tet_sub_determinants.clear();
     free_tets.clear();
     live_tets = 0;
     ghost_tets = 0;
@@ -187,6 +207,7 @@ struct Flat_storage
     tet_vertices.reserve(4 * total);
     tet_neighbors.reserve(4 * total);
     tet_flags.reserve(total);
+    if(with_sub_determinants) tet_sub_determinants.reserve(4 * total);
   }
 
   // A slot for a new tetrahedron: a freed one if any, else a new one at the end.
@@ -201,6 +222,7 @@ struct Flat_storage
     tet_vertices.resize(4 * (t + 1));
     tet_neighbors.resize(4 * (t + 1));
     tet_flags.resize(t + 1);
+    if(with_sub_determinants) tet_sub_determinants.resize(4 * (t + 1));
     return t;
   }
 
@@ -224,12 +246,14 @@ struct Flat_storage
         const Facet_code code = tet_neighbors[4 * t + i];
         tet_vertices[4 * u + i] = tet_vertices[4 * t + i];
         tet_neighbors[4 * u + i] = facet_code(new_index[tet_of(code)], facet_of(code));
+        if(with_sub_determinants) tet_sub_determinants[4 * u + i] = tet_sub_determinants[4 * t + i];
       }
-      tet_flags[u] = 0;
+      tet_flags[u] = Tet_flags::none;
     }
     tet_vertices.resize(4 * next);
     tet_neighbors.resize(4 * next);
     tet_flags.resize(next);
+    if(with_sub_determinants) tet_sub_determinants.resize(4 * next);
     free_tets.clear();
     CGAL_assertion(next == live_tets);
   }

@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
@@ -120,31 +121,20 @@ inline bool collinear(const double* p, const double* q, const double* r)
   return predicates_detail::collinear_exact(p, q, r);
 }
 
-// Exact sign of orientation(p, q, r, s).
-inline int orientation(const double* p, const double* q, const double* r, const double* s)
+// The floating-point determinants.  orientation_determinant has CGAL's sign;
+// in_sphere_determinant is Shewchuk's insphere(p,q,r,s,t), positive for t
+// inside when orient3d(p,q,r,s) > 0, i.e. when CGAL's orientation is negative.
+inline double orientation_determinant(const double* p, const double* q, const double* r,
+                                      const double* s)
 {
   const double qx = q[0] - p[0], qy = q[1] - p[1], qz = q[2] - p[2];
   const double rx = r[0] - p[0], ry = r[1] - p[1], rz = r[2] - p[2];
   const double sx = s[0] - p[0], sy = s[1] - p[1], sz = s[2] - p[2];
-  const double det = qx * (ry * sz - rz * sy) - qy * (rx * sz - rz * sx) + qz * (rx * sy - ry * sx);
-
-  const double mx = std::max(std::max(std::fabs(qx), std::fabs(rx)), std::fabs(sx));
-  const double my = std::max(std::max(std::fabs(qy), std::fabs(ry)), std::fabs(sy));
-  const double mz = std::max(std::max(std::fabs(qz), std::fabs(rz)), std::fabs(sz));
-  const double lo = std::min(std::min(mx, my), mz);
-  const double hi = std::max(std::max(mx, my), mz);
-  if(lo > Filter_bounds::orientation_min && hi < Filter_bounds::orientation_max) {
-    const double bound = Filter_bounds::orientation * mx * my * mz;
-    if(det > bound) return 1;
-    if(det < -bound) return -1;
-  }
-  return predicates_detail::orientation_exact(p, q, r, s);
+  return qx * (ry * sz - rz * sy) - qy * (rx * sz - rz * sx) + qz * (rx * sy - ry * sx);
 }
 
-// Exact sign of side_of_oriented_sphere(p, q, r, s, t): positive when t is
-// strictly inside the sphere of the positively oriented p, q, r, s.
-inline int side_of_oriented_sphere(const double* p, const double* q, const double* r,
-                                   const double* s, const double* t)
+inline double in_sphere_determinant(const double* p, const double* q, const double* r,
+                                    const double* s, const double* t)
 {
   const double ax = p[0] - t[0], ay = p[1] - t[1], az = p[2] - t[2];
   const double bx = q[0] - t[0], by = q[1] - t[1], bz = q[2] - t[2];
@@ -164,30 +154,109 @@ inline int side_of_oriented_sphere(const double* p, const double* q, const doubl
   const double blift = bx * bx + by * by + bz * bz;
   const double clift = cx * cx + cy * cy + cz * cz;
   const double dlift = dx * dx + dy * dy + dz * dz;
+  return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+}
 
-  // Shewchuk's insphere(p,q,r,s,t); it is positive for t inside when
-  // orient3d(p,q,r,s) > 0, i.e. when CGAL's orientation is negative.
-  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+// Largest absolute difference per axis between `base` and the other points.
+template <int N>
+inline void max_differences(const double* base, const double* const (&points)[N], double m[3])
+{
+  for(int a = 0; a < 3; ++a) {
+    m[a] = 0;
+    for(int i = 0; i < N; ++i) m[a] = std::max(m[a], std::fabs(points[i][a] - base[a]));
+  }
+}
 
-  const double mx = std::max(std::max(std::fabs(ax), std::fabs(bx)), std::max(std::fabs(cx), std::fabs(dx)));
-  const double my = std::max(std::max(std::fabs(ay), std::fabs(by)), std::max(std::fabs(cy), std::fabs(dy)));
-  const double mz = std::max(std::max(std::fabs(az), std::fabs(bz)), std::max(std::fabs(cz), std::fabs(dz)));
-  const double lo = std::min(std::min(mx, my), mz);
-  const double hi = std::max(std::max(mx, my), mz);
+// Exact sign of orientation(p, q, r, s).
+inline int orientation(const double* p, const double* q, const double* r, const double* s)
+{
+  const double det = orientation_determinant(p, q, r, s);
+  const double* const others[3] = {q, r, s};
+  double m[3];
+  max_differences(p, others, m);
+  const double lo = std::min(std::min(m[0], m[1]), m[2]);
+  const double hi = std::max(std::max(m[0], m[1]), m[2]);
+  if(lo > Filter_bounds::orientation_min && hi < Filter_bounds::orientation_max) {
+    const double bound = Filter_bounds::orientation * m[0] * m[1] * m[2];
+    if(det > bound) return 1;
+    if(det < -bound) return -1;
+  }
+  return predicates_detail::orientation_exact(p, q, r, s);
+}
+
+// Exact sign of side_of_oriented_sphere(p, q, r, s, t): positive when t is
+// strictly inside the sphere of the positively oriented p, q, r, s.
+inline int side_of_oriented_sphere(const double* p, const double* q, const double* r,
+                                   const double* s, const double* t)
+{
+  const double det = in_sphere_determinant(p, q, r, s, t);
+  const double* const others[4] = {p, q, r, s};
+  double m[3];
+  max_differences(t, others, m);
+  const double lo = std::min(std::min(m[0], m[1]), m[2]);
+  const double hi = std::max(std::max(m[0], m[1]), m[2]);
   if(lo > Filter_bounds::in_sphere_min && hi < Filter_bounds::in_sphere_max) {
-    const double bound = Filter_bounds::in_sphere * (mx * my * mz) * (mx * mx + my * my + mz * mz);
+    const double bound = Filter_bounds::in_sphere * (m[0] * m[1] * m[2]) * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
     if(det > bound) return -1;
     if(det < -bound) return 1;
   }
   return predicates_detail::side_of_oriented_sphere_exact(p, q, r, s, t);
 }
 
+// A first, static stage in front of the per-call bounds above: the same error
+// bounds evaluated once with the extent of a bounding box, which bounds every
+// coordinate difference of points inside it.  Saves the per-call maxima on
+// the hot path; a determinant below the static bound falls through to the
+// per-call stage (clustered inputs do, because their local determinants are
+// tiny compared with the box).  No global state: the kernel owns its copy.
+struct Static_filter
+{
+  double orientation = std::numeric_limits<double>::infinity();
+  double in_sphere = std::numeric_limits<double>::infinity();
+
+  static Static_filter for_box(const double lo[3], const double hi[3])
+  {
+    Static_filter f;
+    double w[3];
+    for(int a = 0; a < 3; ++a) w[a] = hi[a] - lo[a];
+    const double smallest = std::min(std::min(w[0], w[1]), w[2]);
+    const double largest = std::max(std::max(w[0], w[1]), w[2]);
+    // Round the widths up: hi - lo may round down below a true difference.
+    for(double& x : w) x *= 1.0 + 4 * Filter_bounds::unit_roundoff;
+    if(smallest > Filter_bounds::orientation_min && largest < Filter_bounds::orientation_max)
+      f.orientation = Filter_bounds::orientation * w[0] * w[1] * w[2] * (1.0 + 1e-12);
+    if(smallest > Filter_bounds::in_sphere_min && largest < Filter_bounds::in_sphere_max)
+      f.in_sphere = Filter_bounds::in_sphere * (w[0] * w[1] * w[2]) *
+                    (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * (1.0 + 1e-12);
+    return f;
+  }
+};
+
+inline int orientation(const Static_filter& filter, const double* p, const double* q,
+                       const double* r, const double* s)
+{
+  const double det = orientation_determinant(p, q, r, s);
+  if(det > filter.orientation) return 1;
+  if(det < -filter.orientation) return -1;
+  return orientation(p, q, r, s);
+}
+
+inline int side_of_oriented_sphere(const Static_filter& filter, const double* p, const double* q,
+                                   const double* r, const double* s, const double* t)
+{
+  const double det = in_sphere_determinant(p, q, r, s, t);
+  if(det > filter.in_sphere) return -1;
+  if(det < -filter.in_sphere) return 1;
+  return side_of_oriented_sphere(p, q, r, s, t);
+}
+
 // CGAL's Delaunay_triangulation_3::side_of_oriented_sphere(..., perturb = true):
 // never zero for distinct points.  p0..p3 positively oriented.
 inline int perturbed_side_of_oriented_sphere(const double* p0, const double* p1, const double* p2,
-                                             const double* p3, const double* p)
+                                             const double* p3, const double* p,
+                                             const Static_filter& filter = Static_filter())
 {
-  const int side = side_of_oriented_sphere(p0, p1, p2, p3, p);
+  const int side = side_of_oriented_sphere(filter, p0, p1, p2, p3, p);
   if(side != 0) return side;
 
   const double* points[5] = {p0, p1, p2, p3, p};
@@ -232,18 +301,19 @@ inline int perturbed_coplanar_side_of_bounded_circle(const double* p0, const dou
 
 // Conflict test of a finite tetrahedron (positively oriented a, b, c, d).
 inline bool finite_cell_in_conflict(const double* a, const double* b, const double* c,
-                                    const double* d, const double* p)
+                                    const double* d, const double* p,
+                                    const Static_filter& filter = Static_filter())
 {
-  return perturbed_side_of_oriented_sphere(a, b, c, d, p) > 0;
+  return perturbed_side_of_oriented_sphere(a, b, c, d, p, filter) > 0;
 }
 
 // Conflict test of a ghost tetrahedron (a, b, c, infinite): its "sphere" is
 // the open half-space beyond the hull facet a, b, c, closed by CGAL's
 // perturbed in-circle test inside the facet's plane.
 inline bool ghost_cell_in_conflict(const double* a, const double* b, const double* c,
-                                   const double* p)
+                                   const double* p, const Static_filter& filter = Static_filter())
 {
-  const int o = orientation(a, b, c, p);
+  const int o = orientation(filter, a, b, c, p);
   if(o != 0) return o > 0;
   return perturbed_coplanar_side_of_bounded_circle(a, b, c, p) > 0;
 }

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -46,13 +47,35 @@ public:
   int dimension = -1;
   std::uint64_t seed = 0;
   bool timed = false; // per-phase times (costs two clock reads per phase and point)
+
+  bool sub_determinants() const { return mesh.with_sub_determinants; }
+  // Caches the in-sphere sub-determinants of every tetrahedron (or drops them).
+  void set_sub_determinants(bool on)
+  {
+    if(on == mesh.with_sub_determinants) return;
+    mesh.with_sub_determinants = on;
+    if(!on) {
+      mesh.tet_sub_determinants = Raw_array<double>();
+      return;
+    }
+    mesh.tet_sub_determinants.resize(4 * mesh.number_of_slots());
+    for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
+      if(mesh.is_live(t)) update_sub_determinants(mesh, t);
+  }
   Insertion_report last_report;
 
   std::size_t number_of_vertices() const { return mesh.vertices.size(); }
 
+  Triangulation_core()
+  {
+    mesh.with_sub_determinants = sub_determinants_by_default;
+    reset_bounding_box();
+  }
+
   void clear()
   {
     mesh.clear();
+    reset_bounding_box();
     dimension = -1;
     hint_ = 0;
   }
@@ -95,6 +118,7 @@ public:
       r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
       r.scratch = 0;
     }
+    extend_bounding_box(first_new);
     const Clock::time_point t1 = Clock::now();
     last_report.sort_seconds = seconds(t0, t1);
 
@@ -146,7 +170,8 @@ private:
   {
     Insertion_scratch scratch;
     scratch.timed = timed;
-    Delaunay_kernel kernel(mesh, scratch);
+    Delaunay_kernel kernel(mesh, scratch, Static_filter::for_box(box_lo_, box_hi_),
+                           Sub_determinant_filter::for_box(box_lo_, box_hi_));
     if(!mesh.is_live(hint_)) hint_ = first_live_tet();
     const Clock::time_point t0 = Clock::now();
     for(Vertex_id v = begin; v < end; ++v) {
@@ -159,6 +184,24 @@ private:
     }
     last_report.insertion_seconds += seconds(t0, Clock::now());
     last_report.kernel.add(scratch.stats);
+  }
+
+  // Grows the bounding box of all vertices (kept incrementally: single-point
+  // insertions must not scan the vertices).
+  void extend_bounding_box(std::size_t first)
+  {
+    for(std::size_t v = first; v < number_of_vertices(); ++v)
+      for(int a = 0; a < 3; ++a) {
+        box_lo_[a] = std::min(box_lo_[a], mesh.vertices[v].xyz[a]);
+        box_hi_[a] = std::max(box_hi_[a], mesh.vertices[v].xyz[a]);
+      }
+  }
+  void reset_bounding_box()
+  {
+    for(int a = 0; a < 3; ++a) {
+      box_lo_[a] = std::numeric_limits<double>::infinity();
+      box_hi_[a] = -std::numeric_limits<double>::infinity();
+    }
   }
 
   Tet_id first_live_tet() const
@@ -220,6 +263,7 @@ private:
     mesh.tet_vertices.clear();
     mesh.tet_neighbors.clear();
     mesh.tet_flags.clear();
+    mesh.tet_sub_determinants.clear();
     Tet_id tets[5];
     for(Tet_id& t : tets) t = mesh.new_tet();
     for(int i = 0; i < 4; ++i) mesh.tet_vertices[i] = simplex[i];
@@ -231,8 +275,9 @@ private:
       g[3] = ghost_vertex;
     }
     for(int t = 0; t < 5; ++t) {
-      mesh.tet_flags[t] = 0;
+      mesh.tet_flags[t] = Tet_flags::none;
       for(int i = 0; i < 4; ++i) mesh.tet_neighbors[4 * t + i] = match_facet(t, i);
+      if(mesh.with_sub_determinants) update_sub_determinants(mesh, t);
     }
     mesh.live_tets = 5;
     mesh.ghost_tets = 4;
@@ -307,6 +352,7 @@ private:
   }
 
   Tet_id hint_ = 0;
+  double box_lo_[3], box_hi_[3];
 };
 
 inline bool Triangulation_core::is_valid(std::string* why) const
