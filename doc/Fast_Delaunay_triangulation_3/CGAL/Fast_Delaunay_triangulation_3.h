@@ -1,0 +1,757 @@
+
+namespace CGAL {
+
+/*!
+\ingroup PkgFastDelaunayTriangulation3TriangulationClasses
+
+The class `Fast_Delaunay_triangulation_3` represents the Delaunay
+triangulation of a set of points in \f$ \mathbb{R}^3 \f$, with the interface
+of `Delaunay_triangulation_3` for building a triangulation by insertion and
+reading it.
+
+For any input without NaN or infinite coordinates, its finite cells are
+exactly those of `Delaunay_triangulation_3<Epick>` on the same points, as sets
+of four points: both evaluate the predicates exactly and both break
+cospherical and coplanar ties with the same symbolic perturbation (the
+lexicographic order of the points), so the triangulation is unique and does
+not depend on the insertion order. A point given several times is stored
+once.
+
+The triangulation is stored in flat arrays (one record per vertex, four vertex
+ids, four neighbour codes and a flag byte per tetrahedron) and points are
+inserted with the algorithm of Marot, Pellerin and Remacle (2019): a BRIO
+order sorted along a Moore curve, then a visibility walk, a cavity search and
+a Delaunay ball per point. See the user manual,
+Chapter \ref Chapter_Fast_Delaunay_triangulation_3.
+
+\tparam Gt is the geometric traits class. It supplies the types `Point_3`,
+`Segment_3`, `Triangle_3` and `Tetrahedron_3`, and its number type `FT` must
+be `double` (a `static_assert` checks it); the default is
+`Exact_predicates_inexact_constructions_kernel`. The predicates of the
+triangulation do not come from `Gt`: they are the package's own filtered
+predicates, whose exact stage is `Exact_predicates_inexact_constructions_kernel`'s.
+
+\tparam Tds_ is accepted so that the class can be named with the template
+arguments of `Delaunay_triangulation_3`, and is ignored: the combinatorics
+always live in the package's flat arrays. Default: `Default`.
+
+\tparam Location_policy is accepted and ignored (insertion always walks from
+the last inserted point). Default: `Default`.
+
+\tparam Lock_data_structure_ is accepted and ignored: insertion is sequential.
+Default: `Default`.
+
+<b>Differences from `Delaunay_triangulation_3`</b>
+
+- Only insertion is provided: there is no `remove()`, `move()`, `locate()`,
+  `nearest_vertex()`, `find_conflicts()`, `side_of_sphere()`, `dual()`,
+  stream operators, circulators (`incident_cells()`, `incident_edges()`,
+  `Cell_circulator`, ...), `is_edge()` / `is_facet()` / `is_cell()`, and no
+  insertion of points with an info. The enum `Locate_type` is declared, but no
+  member function uses it yet.
+- The class does not derive from `Triangulation_utils_3`, so its static index
+  helpers (`ccw()`, `cw()`, `vertex_triple_index()`, `next_around_edge()`)
+  are not members.
+- Below dimension 3 no cells are stored (Section
+  \ref Fast_Delaunay_triangulation_3DegenerateDimensions of the manual):
+  `number_of_cells()`, `number_of_facets()`, `number_of_edges()` and their
+  finite variants return 0, cell, facet and edge iterators are empty,
+  `v->cell()` and `infinite_cell()` return a null handle. `dimension()` has
+  the value `Delaunay_triangulation_3` would have.
+- Handles are a pair (pointer to the triangulation, index in the flat
+  arrays), and iterators hold such a pair. A handle names a slot of the
+  triangulation it came from: after a move, a swap or an assignment it still
+  refers to that object, not to the data, whereas a handle of
+  `Delaunay_triangulation_3` follows the data. Vertex handles stay valid
+  across insertions. A cell handle taken before an insertion may name a
+  different cell afterwards, because the slots of deleted cells are reused.
+- `Vertex::point()` returns the point by value; the point of the infinite
+  vertex is `Point(0, 0, 0)`.
+- All iterators are forward iterators (those of `Delaunay_triangulation_3` are
+  bidirectional). They dereference to a `Vertex` or `Cell` object stored
+  inside the iterator, so `&*it` is valid only as long as `it` is unchanged.
+- Finite vertices are enumerated in the order of the vertex ids, which is the
+  insertion order chosen by the spatial sort, not the order of the input.
+- A point with a NaN or infinite coordinate makes `insert()` throw
+  `std::invalid_argument` and leaves the triangulation unchanged.
+- At most \f$ 2^{32} - 2 \f$ vertices (`std::length_error` beyond).
+- `v->cell()` builds, on its first call after an insertion, a table of one
+  incident cell per vertex (a pass over all cells); `infinite_cell()` scans
+  the cells. Neither may be called concurrently from several threads.
+
+\sa `CGAL::Delaunay_triangulation_3`
+*/
+template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
+          class Location_policy = Default, class Lock_data_structure_ = Default>
+class Fast_Delaunay_triangulation_3
+{
+public:
+
+/// \name Types
+/// @{
+
+/*!
+The geometric traits class.
+*/
+typedef Gt Geom_traits;
+
+/*!
+*/
+typedef typename Gt::Point_3 Point;
+
+/*!
+*/
+typedef typename Gt::Segment_3 Segment;
+
+/*!
+*/
+typedef typename Gt::Triangle_3 Triangle;
+
+/*!
+*/
+typedef typename Gt::Tetrahedron_3 Tetrahedron;
+
+/*!
+*/
+typedef std::size_t size_type;
+
+/*!
+*/
+typedef std::ptrdiff_t difference_type;
+
+/*!
+A vertex, as seen through the triangulation: the value type of the vertex
+iterators and the object a `Vertex_handle` points to. Its members are
+`Point point() const`, `Cell_handle cell() const` (an incident cell, or a null
+handle below dimension 3) and `bool is_valid(bool = false, int = 0) const`.
+*/
+typedef unspecified_type Vertex;
+
+/*!
+A cell (tetrahedron), as seen through the triangulation: the value type of
+the cell iterators and the object a `Cell_handle` points to. Its members are
+those of `TriangulationCellBase_3` that read the combinatorics:
+`Vertex_handle vertex(int i)`, `Cell_handle neighbor(int i)`,
+`int index(Vertex_handle v)`, `int index(Cell_handle c)`,
+`bool has_vertex(Vertex_handle v)`, `bool has_vertex(Vertex_handle v, int& i)`,
+`bool has_neighbor(Cell_handle c)`, `bool has_neighbor(Cell_handle c, int& i)`
+and `bool is_valid(bool = false, int = 0)` (true for a cell that exists), all
+`const`. `index()` has the precondition that the vertex (neighbour) belongs to
+the cell.
+*/
+typedef unspecified_type Cell;
+
+/*!
+Handle to a vertex. Default constructible (null), constructible from
+`nullptr`, comparable with `==`, `!=` and with `nullptr`, totally ordered
+(`<`, `>`, `<=`, `>=`), hashable with `std::hash` and `boost::hash`
+(`hash_value()`), and explicitly convertible to `bool`, so it works as a key
+of `std::map`, `std::set` and `std::unordered_map`.
+*/
+typedef unspecified_type Vertex_handle;
+
+/*!
+Handle to a cell, with the same properties as `Vertex_handle`.
+*/
+typedef unspecified_type Cell_handle;
+
+/*!
+Facet `i` of cell `c`: the facet opposite to `c->vertex(i)`.
+*/
+typedef std::pair<Cell_handle, int> Facet;
+
+/*!
+Edge `(i, j)` of cell `c`: the edge between `c->vertex(i)` and `c->vertex(j)`.
+*/
+typedef Triple<Cell_handle, int, int> Edge;
+
+/*!
+The enum of `Triangulation_3`, declared for source compatibility; no member
+function uses it yet.
+*/
+enum Locate_type { VERTEX = 0, EDGE, FACET, CELL, OUTSIDE_CONVEX_HULL, OUTSIDE_AFFINE_HULL };
+
+/*!
+Timings and counters of the last call to `insert()`; see
+Section \ref Fast_Delaunay_triangulation_3Options of the manual. Fields:
+`points` (the size of the inserted range), `sort_seconds`, `init_seconds`,
+`insertion_seconds`, `finish_seconds`, and `kernel`, whose fields are the
+counters `inserted`, `duplicates`, `walk_steps`, `cavity_tets`, `ball_tets`,
+`conflict_tests`, `small_cavities`, `large_cavities` and, when phase timing is
+on, `walk_seconds`, `cavity_seconds`, `ball_seconds`.
+*/
+typedef unspecified_type Insertion_report;
+
+/// @}
+
+/// \name Iterators and Ranges
+/// All iterators are forward iterators. The cell and vertex iterators
+/// dereference to `Cell` and `Vertex` and convert to `Cell_handle` and
+/// `Vertex_handle`; the facet and edge iterators dereference to `Facet` and
+/// `Edge`; the `*_handles_iterator` types dereference to handles.
+/// The ranges are `Iterator_range`s of the corresponding iterators.
+/// @{
+
+/*!
+All cells, finite and infinite.
+*/
+typedef unspecified_type All_cells_iterator;
+
+/*!
+*/
+typedef unspecified_type Finite_cells_iterator;
+
+/*!
+Same as `All_cells_iterator`.
+*/
+typedef All_cells_iterator Cell_iterator;
+
+/*!
+All vertices: the infinite vertex first, then the finite vertices.
+*/
+typedef unspecified_type All_vertices_iterator;
+
+/*!
+*/
+typedef unspecified_type Finite_vertices_iterator;
+
+/*!
+Same as `All_vertices_iterator`.
+*/
+typedef All_vertices_iterator Vertex_iterator;
+
+/*!
+All facets; each one is reported once, from the cell of smaller index among
+its two cells.
+*/
+typedef unspecified_type All_facets_iterator;
+
+/*!
+Facets that do not contain the infinite vertex. A facet on the convex hull
+may be reported from its infinite cell, as `(c, 3)`.
+*/
+typedef unspecified_type Finite_facets_iterator;
+
+/*!
+Same as `All_facets_iterator`.
+*/
+typedef All_facets_iterator Facet_iterator;
+
+/*!
+All edges; each one is reported once, from the cell of smallest index
+around it.
+*/
+typedef unspecified_type All_edges_iterator;
+
+/*!
+Edges that do not contain the infinite vertex.
+*/
+typedef unspecified_type Finite_edges_iterator;
+
+/*!
+Same as `All_edges_iterator`.
+*/
+typedef All_edges_iterator Edge_iterator;
+
+/*!
+*/
+typedef unspecified_type All_cell_handles_iterator;
+
+/*!
+*/
+typedef unspecified_type Finite_cell_handles_iterator;
+
+/*!
+*/
+typedef unspecified_type All_vertex_handles_iterator;
+
+/*!
+*/
+typedef unspecified_type Finite_vertex_handles_iterator;
+
+/*!
+*/
+typedef Iterator_range<All_cells_iterator> All_cells;
+
+/*!
+*/
+typedef Iterator_range<Finite_cells_iterator> Finite_cells;
+
+/*!
+*/
+typedef Iterator_range<All_vertices_iterator> All_vertices;
+
+/*!
+*/
+typedef Iterator_range<Finite_vertices_iterator> Finite_vertices;
+
+/*!
+*/
+typedef Iterator_range<All_facets_iterator> All_facets;
+
+/*!
+*/
+typedef Iterator_range<Finite_facets_iterator> Finite_facets;
+
+/*!
+*/
+typedef Iterator_range<All_edges_iterator> All_edges;
+
+/*!
+*/
+typedef Iterator_range<Finite_edges_iterator> Finite_edges;
+
+/*!
+*/
+typedef Iterator_range<All_cell_handles_iterator> All_cell_handles;
+
+/*!
+*/
+typedef Iterator_range<Finite_cell_handles_iterator> Finite_cell_handles;
+
+/*!
+*/
+typedef Iterator_range<All_vertex_handles_iterator> All_vertex_handles;
+
+/*!
+*/
+typedef Iterator_range<Finite_vertex_handles_iterator> Finite_vertex_handles;
+
+/// @}
+
+/// \name Creation
+/// @{
+
+/*!
+Creates an empty triangulation (dimension -1) that stores `gt`.
+*/
+explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits());
+
+/*!
+Equivalent to constructing an empty triangulation and calling
+`insert(first, last)`.
+\tparam InputIterator an input iterator with value type `Point`.
+*/
+template <class InputIterator>
+Fast_Delaunay_triangulation_3(InputIterator first, InputIterator last,
+                              const Geom_traits& gt = Geom_traits());
+
+/*!
+Copies the arrays of `other`. Handles of `other` keep referring to `other`.
+*/
+Fast_Delaunay_triangulation_3(const Fast_Delaunay_triangulation_3& other);
+
+/*!
+Takes the arrays of `other` and leaves `other` empty (dimension -1, usable).
+*/
+Fast_Delaunay_triangulation_3(Fast_Delaunay_triangulation_3&& other) noexcept;
+
+/*!
+*/
+Fast_Delaunay_triangulation_3& operator=(const Fast_Delaunay_triangulation_3& other);
+
+/*!
+Leaves `other` empty.
+*/
+Fast_Delaunay_triangulation_3& operator=(Fast_Delaunay_triangulation_3&& other) noexcept;
+
+/*!
+Exchanges the contents of the two triangulations. Handles keep referring to
+the object they were taken from.
+*/
+void swap(Fast_Delaunay_triangulation_3& other);
+
+/*!
+Removes all vertices and cells; the dimension becomes -1. The options
+(seed, phase timing, sub-determinants) are kept.
+*/
+void clear();
+
+/// @}
+
+/// \name Options
+/// See Section \ref Fast_Delaunay_triangulation_3Options of the manual.
+/// @{
+
+/*!
+Sets the seed of the insertion order of later insertions (default 0). The
+finite cells do not depend on it; the vertex ids, hence the order of the
+iterators, do.
+*/
+void set_seed(std::uint64_t seed);
+
+/*!
+Turns the clocks around the walk, the cavity and the Delaunay ball of every
+point on or off (default off). The report then fills
+`kernel.walk_seconds`, `kernel.cavity_seconds` and `kernel.ball_seconds`.
+*/
+void set_phase_timing(bool on);
+
+/*!
+Timings and counters of the last call to `insert()`, range or single point.
+*/
+const Insertion_report& last_insertion_report() const;
+
+/*!
+Stores (on) or drops (off) the four in-sphere sub-determinants of every
+tetrahedron (32 bytes per tetrahedron). Turning them on computes them for all
+existing tetrahedra. The default is off unless the macro
+`CGAL_FDT3_SUB_DETERMINANTS` is defined to a non-zero value. The
+triangulation is the same either way, except for the known problem described
+in Section \ref Fast_Delaunay_triangulation_3Robustness of the manual
+(bounding boxes wider than \f$ 10^{50} \f$ or narrower than \f$ 10^{-50} \f$).
+*/
+void set_sub_determinants(bool on);
+
+/*!
+Whether sub-determinants are stored.
+*/
+bool sub_determinants() const;
+
+/// @}
+
+/// \name Insertion
+/// @{
+
+/*!
+Inserts the points of `[first, last)` and returns the number of new vertices
+(points already present, or repeated in the range, add none). The points are
+inserted in an order of their own (BRIO rounds sorted along a Moore curve).
+If a point has a NaN or infinite coordinate, throws `std::invalid_argument`
+whose message gives the position of the first such point in the range, before
+anything is changed.
+\tparam InputIterator an input iterator with value type `Point`; not
+convertible to `Cell_handle`.
+*/
+template <class InputIterator>
+std::ptrdiff_t insert(InputIterator first, InputIterator last);
+
+/*!
+Inserts `p` and returns its vertex, or the existing vertex at `p`. Throws
+`std::invalid_argument` for a NaN or infinite coordinate, without change.
+*/
+Vertex_handle insert(const Point& p);
+
+/*!
+Same as `insert(p)`; the hint is ignored (the walk starts next to the last
+inserted point).
+*/
+Vertex_handle insert(const Point& p, Cell_handle hint);
+
+/*!
+Same as `insert(p)`; the hint is ignored.
+*/
+Vertex_handle insert(const Point& p, Vertex_handle hint);
+
+/// @}
+
+/// \name Access Functions
+/// @{
+
+/*!
+*/
+const Geom_traits& geom_traits() const;
+
+/*!
+The dimension of the affine hull of the points: -1 (empty), 0, 1, 2 or 3,
+as in `Delaunay_triangulation_3`.
+*/
+int dimension() const;
+
+/*!
+The number of finite vertices.
+*/
+size_type number_of_vertices() const;
+
+/*!
+The number of cells, finite and infinite; 0 if `dimension() < 3`.
+*/
+size_type number_of_cells() const;
+
+/*!
+0 if `dimension() < 3`.
+*/
+size_type number_of_finite_cells() const;
+
+/*!
+Twice the number of cells; 0 if `dimension() < 3`.
+*/
+size_type number_of_facets() const;
+
+/*!
+The interior facets plus the convex hull facets; 0 if `dimension() < 3`.
+*/
+size_type number_of_finite_facets() const;
+
+/*!
+Computed from Euler's relation on the triangulated ball,
+\f$ V - E + F - T = 1 \f$; 0 if `dimension() < 3`.
+*/
+size_type number_of_finite_edges() const;
+
+/*!
+The finite edges plus one infinite edge per convex hull vertex; 0 if
+`dimension() < 3`.
+*/
+size_type number_of_edges() const;
+
+/*!
+*/
+Vertex_handle infinite_vertex() const;
+
+/*!
+An infinite cell, or a null handle if `dimension() < 3`. Scans the cells.
+*/
+Cell_handle infinite_cell() const;
+
+/*!
+The point of vertex `i` of `c`.
+\pre `c->vertex(i)` is finite.
+*/
+Point point(Cell_handle c, int i) const;
+
+/*!
+*/
+Point point(Vertex_handle v) const;
+
+/*!
+The tetrahedron of the four points of `c`.
+\pre `c` is finite.
+*/
+Tetrahedron tetrahedron(Cell_handle c) const;
+
+/// @}
+
+/// \name Predicates
+/// In an infinite cell the infinite vertex is always vertex 3.
+/// @{
+
+/*!
+*/
+bool is_infinite(Vertex_handle v) const;
+
+/*!
+*/
+bool is_infinite(Cell_handle c) const;
+
+/*!
+Whether facet `i` of `c` contains the infinite vertex.
+*/
+bool is_infinite(Cell_handle c, int i) const;
+
+/*!
+*/
+bool is_infinite(const Facet& f) const;
+
+/*!
+Whether edge `(i, j)` of `c` contains the infinite vertex.
+*/
+bool is_infinite(Cell_handle c, int i, int j) const;
+
+/*!
+*/
+bool is_infinite(const Edge& e) const;
+
+/// @}
+
+/// \name Adjacency
+/// @{
+
+/*!
+The index of `c` in its neighbour `c->neighbor(i)`, read from the neighbour
+code without a search.
+*/
+int mirror_index(Cell_handle c, int i) const;
+
+/*!
+The vertex of `c->neighbor(i)` opposite to `c`.
+*/
+Vertex_handle mirror_vertex(Cell_handle c, int i) const;
+
+/*!
+The same facet seen from the other cell.
+*/
+Facet mirror_facet(const Facet& f) const;
+
+/// @}
+
+/// \name Cell, Vertex, Facet and Edge Iterators
+/// `cells_begin()`, `vertices_begin()`, `facets_begin()` and `edges_begin()`
+/// (and their `end`) are the same as the `all_` versions.
+/// @{
+
+/*!
+*/
+All_cells_iterator all_cells_begin() const;
+/*!
+*/
+All_cells_iterator all_cells_end() const;
+/*!
+*/
+All_cells_iterator cells_begin() const;
+/*!
+*/
+All_cells_iterator cells_end() const;
+/*!
+*/
+Finite_cells_iterator finite_cells_begin() const;
+/*!
+*/
+Finite_cells_iterator finite_cells_end() const;
+
+/*!
+Starts with the infinite vertex, which exists even in the empty
+triangulation.
+*/
+All_vertices_iterator all_vertices_begin() const;
+/*!
+*/
+All_vertices_iterator all_vertices_end() const;
+/*!
+*/
+All_vertices_iterator vertices_begin() const;
+/*!
+*/
+All_vertices_iterator vertices_end() const;
+/*!
+*/
+Finite_vertices_iterator finite_vertices_begin() const;
+/*!
+*/
+Finite_vertices_iterator finite_vertices_end() const;
+
+/*!
+*/
+All_facets_iterator all_facets_begin() const;
+/*!
+*/
+All_facets_iterator all_facets_end() const;
+/*!
+*/
+All_facets_iterator facets_begin() const;
+/*!
+*/
+All_facets_iterator facets_end() const;
+/*!
+*/
+Finite_facets_iterator finite_facets_begin() const;
+/*!
+*/
+Finite_facets_iterator finite_facets_end() const;
+
+/*!
+Each increment turns around the next candidate edge to find out whether the
+current cell has the smallest index around it, so a full pass costs about the
+sum of the edge degrees.
+*/
+All_edges_iterator all_edges_begin() const;
+/*!
+*/
+All_edges_iterator all_edges_end() const;
+/*!
+*/
+All_edges_iterator edges_begin() const;
+/*!
+*/
+All_edges_iterator edges_end() const;
+/*!
+*/
+Finite_edges_iterator finite_edges_begin() const;
+/*!
+*/
+Finite_edges_iterator finite_edges_end() const;
+
+/// @}
+
+/// \name Ranges
+/// @{
+
+/*!
+*/
+All_cells all_cells() const;
+/*!
+*/
+Finite_cells finite_cells() const;
+/*!
+*/
+All_vertices all_vertices() const;
+/*!
+*/
+Finite_vertices finite_vertices() const;
+/*!
+*/
+All_facets all_facets() const;
+/*!
+*/
+Finite_facets finite_facets() const;
+/*!
+*/
+All_edges all_edges() const;
+/*!
+*/
+Finite_edges finite_edges() const;
+/*!
+*/
+All_cell_handles all_cell_handles() const;
+/*!
+*/
+Finite_cell_handles finite_cell_handles() const;
+/*!
+*/
+All_vertex_handles all_vertex_handles() const;
+/*!
+*/
+Finite_vertex_handles finite_vertex_handles() const;
+
+/// @}
+
+/// \name Checking
+/// @{
+
+/*!
+Checks, with exact predicates: that every cell references existing vertices,
+with the infinite vertex only in slot 3; that adjacency is symmetric and
+neighbours share the facet; that no infinite cell is adjacent to another
+through its finite facet; that finite cells are positively oriented and the
+convex hull facets are seen from outside by their infinite cells; that every
+finite cell is locally Delaunay across each facet (with the symbolic
+perturbation); that the stored counts match; and that every vertex is in a
+cell. Below dimension 3 it checks that no cell is stored. If `verbose`, the
+first problem found is written to `std::cerr`. The `level` argument is
+ignored.
+*/
+bool is_valid(bool verbose = false, int level = 0) const;
+
+/// @}
+
+/// \name Internal Access
+/// Public so that handles and iterators can reach the arrays; not part of the
+/// interface users should rely on.
+/// @{
+
+/*!
+The flat arrays.
+*/
+const Fast_Delaunay_triangulation_3_internal::Flat_storage& flat_storage() const;
+
+/*!
+The point of vertex id `v`; `Point(0, 0, 0)` for the infinite vertex.
+*/
+Point point_of(Fast_Delaunay_triangulation_3_internal::Vertex_id v) const;
+
+/*!
+A cell incident to vertex id `v`, or a null handle below dimension 3.
+*/
+Cell_handle incident_cell_of(Fast_Delaunay_triangulation_3_internal::Vertex_id v) const;
+
+/*!
+The smallest index among the cells around edge `(i, j)` of cell `t`.
+*/
+Fast_Delaunay_triangulation_3_internal::Tet_id
+smallest_cell_around_edge(Fast_Delaunay_triangulation_3_internal::Tet_id t, int i, int j) const;
+
+/// @}
+
+}; /* end Fast_Delaunay_triangulation_3 */
+
+} /* end namespace CGAL */
