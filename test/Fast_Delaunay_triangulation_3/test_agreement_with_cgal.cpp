@@ -86,3 +86,25 @@ INSTANTIATE_TEST_SUITE_P(Distributions, Sub_determinants,
                          ::testing::Values("uniform", "clusters", "sphere", "grid", "duplicates", "offset", "tiny"));
 
 } // namespace
+
+namespace {
+
+// Inserting the centre of a sphere of many points makes every cell conflict:
+// the cavity boundary has far more than 31 vertices, so the Delaunay ball
+// must take the sorted-edge fallback instead of the adjacency table.
+TEST(Regression, CosphericalShellForcesLargeCavityFallback)
+{
+  std::vector<Point> shell;
+  for(const Xyz& q : sphere_points(400, 11)) shell.emplace_back(q.x, q.y, q.z);
+  Fast_dt fast(shell.begin(), shell.end());
+  fast.insert(Point(0, 0, 0));
+  EXPECT_EQ(fast.last_insertion_report().kernel.large_cavities, 1u);
+  EXPECT_EQ(fast.last_insertion_report().kernel.small_cavities, 0u);
+  shell.push_back(Point(0, 0, 0));
+  const Cgal_dt cgal(shell.begin(), shell.end());
+  ASSERT_TRUE(fast.is_valid(true));
+  EXPECT_EQ(fast.number_of_finite_cells(), cgal.number_of_finite_cells());
+  EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+}
+
+} // namespace

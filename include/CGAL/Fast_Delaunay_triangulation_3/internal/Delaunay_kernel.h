@@ -40,6 +40,8 @@ enum class Insertion_result { inserted, duplicate, aborted };
 struct Boundary_facet
 {
   Vertex_id v[3];
+  std::uint8_t local[3]; // numbers of v[] on the cavity boundary (0 = ghost), see number_vertex
+  std::uint8_t unused;
   Facet_code outside;
 };
 static_assert(sizeof(Boundary_facet) == 24, "boundary facet record");
@@ -190,7 +192,7 @@ public:
   }
 
   // Conflict test of a live tetrahedron with p (perturbed, never a tie).
-  bool in_conflict(Tet_id t, const double* p) const
+  __attribute__((always_inline)) bool in_conflict(Tet_id t, const double* p) const
   {
     const Vertex_id* tv = &m_.tet_vertices[4 * t];
     if(m_.with_sub_determinants) {
@@ -233,6 +235,8 @@ private:
     std::vector<Boundary_facet>& boundary = s_.boundary;
     cavity.clear();
     boundary.clear();
+    s_.boundary_vertices.clear();
+    cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
     m_.tet_flags[start] = m_.tet_flags[start] | Tet_flags::deleted;
     cavity.push_back(start);
 
@@ -249,6 +253,7 @@ private:
           if(in_conflict(u, p)) {
             m_.tet_flags[u] = flags | Tet_flags::deleted;
             cavity.push_back(u);
+            cavity_ghosts_ += m_.is_ghost(u) ? 1 : 0;
             continue;
           }
           m_.tet_flags[u] = flags | Tet_flags::outside;
@@ -278,6 +283,9 @@ private:
     record.v[0] = a;
     record.v[1] = b;
     record.v[2] = c;
+    record.local[0] = number_vertex(a);
+    record.local[1] = number_vertex(b);
+    record.local[2] = number_vertex(c);
     record.outside = outside;
   }
 
@@ -289,12 +297,14 @@ private:
   {
     const std::size_t facets = s_.boundary.size();
     take_ball_slots(facets);
-    if(facets <= 2 * (Insertion_scratch::table_size - 2) && glue_with_table(p)) {
+    if(s_.boundary_vertices.size() < Insertion_scratch::table_size) {
+      glue_with_table(p);
       ++s_.stats.small_cavities;
     } else {
       glue_with_sorted_edges(p);
       ++s_.stats.large_cavities;
     }
+    for(Vertex_id v : s_.boundary_vertices) m_.vertices[v].scratch = 0;
     m_.live_tets += facets - s_.cavity.size();
     s_.stats.ball_tets += facets;
   }
@@ -308,9 +318,7 @@ private:
     ball.insert(ball.end(), s_.cavity.begin(), s_.cavity.begin() + reused);
     for(std::size_t k = reused; k < s_.cavity.size(); ++k)
       m_.free_tets.push_back(s_.cavity[k]); // stays flagged deleted
-    std::size_t ghosts_removed = 0;
-    for(Tet_id t : s_.cavity) ghosts_removed += m_.is_ghost(t) ? 1 : 0;
-    m_.ghost_tets -= ghosts_removed;
+    m_.ghost_tets -= cavity_ghosts_;
     while(ball.size() < facets) ball.push_back(m_.new_tet());
   }
 
@@ -325,56 +333,47 @@ private:
     if(m_.with_sub_determinants) update_sub_determinants(m_, t);
   }
 
-  // Local numbers 1..31 of the boundary vertices live in the vertex scratch
-  // words (0 = not numbered yet; the ghost is always 0).  Returns false when
-  // the boundary has too many vertices for the table.
-  bool glue_with_table(Vertex_id p)
+  // Local numbers 1..31 of the cavity boundary vertices, for the adjacency
+  // table, live in the vertex scratch words (0 = not numbered yet; the ghost
+  // is always 0) and are cleared after the Delaunay ball.  Numbering happens
+  // while the boundary facet is recorded, when the vertex is in cache anyway.
+  // Past 31 vertices the numbers are meaningless (saturated) and the ball
+  // uses the sorted fallback.
+  std::uint8_t number_vertex(Vertex_id v)
   {
-    constexpr unsigned n = Insertion_scratch::table_size;
-    std::vector<Vertex_id>& numbered = s_.boundary_vertices;
-    numbered.clear();
-    bool fits = true;
-    for(const Boundary_facet& b : s_.boundary) {
-      for(int i = 0; i < 3 && fits; ++i) {
-        const Vertex_id v = b.v[i];
-        if(v == ghost_vertex || m_.vertices[v].scratch != 0) continue;
-        if(numbered.size() + 1 == n) fits = false;
-        else {
-          numbered.push_back(v);
-          m_.vertices[v].scratch = numbered.size();
-        }
-      }
-      if(!fits) break;
+    if(v == ghost_vertex) return 0;
+    std::uint64_t& tag = m_.vertices[v].scratch;
+    if(tag == 0) {
+      s_.boundary_vertices.push_back(v);
+      tag = s_.boundary_vertices.size();
     }
-    if(fits) {
-      const std::size_t facets = s_.boundary.size();
-      for(std::size_t k = 0; k < facets; ++k) {
-        const Boundary_facet& b = s_.boundary[k];
-        const unsigned a = local_of(b.v[0]), bb = local_of(b.v[1]), c = local_of(b.v[2]);
-        const Tet_id t = s_.ball[k];
-        write_ball_tet(t, p, b);
-        s_.edge_table[bb * n + c] = facet_code(t, 1);
-        s_.edge_table[c * n + a] = facet_code(t, 2);
-        s_.edge_table[a * n + bb] = facet_code(t, 3);
-      }
-      // Every entry read here was written above: the boundary is a closed
-      // surface, so each directed edge appears once in each direction.
-      for(std::size_t k = 0; k < facets; ++k) {
-        const Boundary_facet& b = s_.boundary[k];
-        const unsigned a = local_of(b.v[0]), bb = local_of(b.v[1]), c = local_of(b.v[2]);
-        Facet_code* nb = &m_.tet_neighbors[4 * s_.ball[k]];
-        nb[1] = s_.edge_table[c * n + bb];
-        nb[2] = s_.edge_table[a * n + c];
-        nb[3] = s_.edge_table[bb * n + a];
-      }
-    }
-    for(Vertex_id v : numbered) m_.vertices[v].scratch = 0;
-    return fits;
+    return static_cast<std::uint8_t>(std::min<std::uint64_t>(tag, Insertion_scratch::table_size - 1));
   }
 
-  unsigned local_of(Vertex_id v) const
+  // Every table entry read in the second pass was written in the first: the
+  // cavity boundary is a closed surface, so each directed edge appears once
+  // in each direction.
+  void glue_with_table(Vertex_id p)
   {
-    return v == ghost_vertex ? 0u : static_cast<unsigned>(m_.vertices[v].scratch);
+    constexpr unsigned n = Insertion_scratch::table_size;
+    const std::size_t facets = s_.boundary.size();
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = s_.boundary[k];
+      const unsigned a = b.local[0], bb = b.local[1], c = b.local[2];
+      const Tet_id t = s_.ball[k];
+      write_ball_tet(t, p, b);
+      s_.edge_table[bb * n + c] = facet_code(t, 1);
+      s_.edge_table[c * n + a] = facet_code(t, 2);
+      s_.edge_table[a * n + bb] = facet_code(t, 3);
+    }
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = s_.boundary[k];
+      const unsigned a = b.local[0], bb = b.local[1], c = b.local[2];
+      Facet_code* nb = &m_.tet_neighbors[4 * s_.ball[k]];
+      nb[1] = s_.edge_table[c * n + bb];
+      nb[2] = s_.edge_table[a * n + c];
+      nb[3] = s_.edge_table[bb * n + a];
+    }
   }
 
   // Fallback for cavities with more than 31 boundary vertices: half-edges
@@ -414,6 +413,7 @@ private:
   Insertion_scratch& s_;
   Static_filter filter_;
   Sub_determinant_filter sub_filter_;
+  std::size_t cavity_ghosts_ = 0;
 };
 
 } // namespace Fast_Delaunay_triangulation_3_internal
