@@ -34,7 +34,7 @@ namespace CGAL {
 
 template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
           class Location_policy = Default, class Lock_data_structure_ = Default>
-class Fast_Delaunay_triangulation_3
+class Fast_Delaunay_triangulation_3 : public Triangulation_utils_3
 {
   typedef Fast_Delaunay_triangulation_3<Gt, Tds_, Location_policy, Lock_data_structure_> Self;
   typedef Fast_Delaunay_triangulation_3_internal::Triangulation_core Core;

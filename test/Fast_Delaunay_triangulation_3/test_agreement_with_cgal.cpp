@@ -82,6 +82,22 @@ TEST(Sub_determinants, SwitchedOnAfterConstruction)
   EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
 }
 
+// Extents outside [1e-50, 1e50] disable the sub-determinant filter: every
+// test must then go to the full predicates and still give CGAL's cells.
+TEST(Sub_determinants, ExtremeExtents)
+{
+  for(double scale : {1e-60, 1e60}) {
+    std::vector<Point> points;
+    for(const Xyz& q : uniform_points(2000, 12)) points.emplace_back(q.x * scale, q.y * scale, q.z * scale);
+    Fast_dt fast;
+    fast.set_sub_determinants(true);
+    fast.insert(points.begin(), points.end());
+    const Cgal_dt cgal(points.begin(), points.end());
+    ASSERT_TRUE(fast.is_valid(true)) << scale;
+    EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal)) << scale;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Distributions, Sub_determinants,
                          ::testing::Values("uniform", "clusters", "sphere", "grid", "duplicates", "offset", "tiny"));
 

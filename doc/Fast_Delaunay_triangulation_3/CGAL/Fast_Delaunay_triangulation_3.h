@@ -397,9 +397,8 @@ Stores (on) or drops (off) the four in-sphere sub-determinants of every
 tetrahedron (32 bytes per tetrahedron). Turning them on computes them for all
 existing tetrahedra. The default is off unless the macro
 `CGAL_FDT3_SUB_DETERMINANTS` is defined to a non-zero value. The
-triangulation is the same either way, except for the known problem described
-in Section \ref Fast_Delaunay_triangulation_3Robustness of the manual
-(bounding boxes wider than \f$ 10^{50} \f$ or narrower than \f$ 10^{-50} \f$).
+triangulation is the same either way (Section
+\ref Fast_Delaunay_triangulation_3Robustness of the manual).
 */
 void set_sub_determinants(bool on);
 

@@ -26,7 +26,7 @@
 // Default of the runtime option (Fast_Delaunay_triangulation_3::set_sub_determinants).
 // Off: measured on 1e6 uniform points, 1 thread, the cavity phase went from
 // 1.50 s to 1.31 s but the Delaunay ball from 0.72 s to 0.95 s, for 32 more
-// bytes per tetrahedron (see delaunay_benchmark --sub-determinants).
+// bytes per tetrahedron (the benchmark's --phases table has both rows).
 #ifndef CGAL_FDT3_SUB_DETERMINANTS
 #define CGAL_FDT3_SUB_DETERMINANTS 0
 #endif
@@ -51,8 +51,9 @@ struct Sub_determinant_filter
   static constexpr double in_sphere_factor = 1e-13;
   static constexpr double orientation_factor = 5e-15;
 
-  double in_sphere = -1;   // negative: always fall back to the full predicate
-  double orientation = -1;
+  // Infinite bounds send every test to the full predicate.
+  double in_sphere = std::numeric_limits<double>::infinity();
+  double orientation = std::numeric_limits<double>::infinity();
 
   static Sub_determinant_filter for_box(const double lo[3], const double hi[3])
   {
