@@ -49,7 +49,7 @@ static_assert(sizeof(Boundary_facet) == 24, "boundary facet record");
 // Counters and optional per-phase times (paper Table 1).
 struct Kernel_statistics
 {
-  std::uint64_t inserted = 0, duplicates = 0;
+  std::uint64_t inserted = 0, duplicates = 0, aborted = 0;
   std::uint64_t walk_steps = 0;
   std::uint64_t cavity_tets = 0, ball_tets = 0;
   std::uint64_t conflict_tests = 0;
@@ -58,7 +58,7 @@ struct Kernel_statistics
 
   void add(const Kernel_statistics& o)
   {
-    inserted += o.inserted; duplicates += o.duplicates; walk_steps += o.walk_steps;
+    inserted += o.inserted; duplicates += o.duplicates; aborted += o.aborted; walk_steps += o.walk_steps;
     cavity_tets += o.cavity_tets; ball_tets += o.ball_tets; conflict_tests += o.conflict_tests;
     small_cavities += o.small_cavities; large_cavities += o.large_cavities;
     walk_seconds += o.walk_seconds; cavity_seconds += o.cavity_seconds; ball_seconds += o.ball_seconds;
@@ -83,6 +83,9 @@ struct Insertion_scratch
   std::uint32_t random_state = 0x9e3779b9u;
   bool timed = false;
   Kernel_statistics stats;
+  // Changes of Flat_storage::live_tets / ghost_tets, applied by the caller
+  // (partitioned insertions run several kernels at once).
+  std::ptrdiff_t live_delta = 0, ghost_delta = 0;
 
   unsigned next_random()
   {
@@ -105,18 +108,63 @@ inline void update_sub_determinants(Flat_storage& m, Tet_id t)
     compute_sub_determinants(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), s);
 }
 
+constexpr Tet_id no_tet = Tet_id(-1);
+
+// Which tetrahedra a kernel may walk through, delete and refill (paper §3.2).
+// Sequentially, all of them.
+struct Sequential_ownership
+{
+  static constexpr bool partitioned = false;
+  bool owns(const Flat_storage&, Tet_id) const { return true; }
+};
+
+// In a partitioned insertion, a tetrahedron belongs to a thread when all its
+// finite vertices are in the thread's partition; the others (foreign or in
+// the buffer zone) are never modified, so threads never touch the same
+// tetrahedron: an outside neighbour of a cavity shares a facet of three owned
+// vertices with it, hence cannot have three vertices of another partition.
+struct Partition_ownership
+{
+  static constexpr bool partitioned = true;
+  const std::uint8_t* partition_of_vertex = nullptr;
+  std::uint8_t partition = 0;
+
+  bool owns(const Flat_storage& m, Tet_id t) const
+  {
+    const Vertex_id* tv = &m.tet_vertices[4 * t];
+    return partition_of_vertex[tv[0]] == partition && partition_of_vertex[tv[1]] == partition &&
+           partition_of_vertex[tv[2]] == partition &&
+           (tv[3] == ghost_vertex || partition_of_vertex[tv[3]] == partition);
+  }
+};
+
+// Where new tetrahedra slots come from: sequentially, the mesh's free list
+// and then the end of the arrays.
+struct Mesh_slots
+{
+  Flat_storage* mesh;
+  bool reserve(std::size_t) { return true; }
+  Tet_id take() { return mesh->new_tet(); }
+  void give(Tet_id t) { mesh->free_tets.push_back(t); }
+};
+
 // Inserts points one at a time into a 3D Delaunay triangulation stored in a
 // Flat_storage.  Preconditions of insert(): the storage holds a valid
 // triangulation of dimension 3 with ghost tetrahedra, and the point's vertex
-// record has been written; vertex scratch words are 0 at rest.
+// record has been written; vertex scratch words are 0 at rest.  The
+// sequential instantiation pays nothing for ownership (owns() is constant).
+template <class Ownership = Sequential_ownership, class Slots = Mesh_slots>
 class Delaunay_kernel
 {
 public:
-  Delaunay_kernel(Flat_storage& mesh, Insertion_scratch& scratch,
+  Delaunay_kernel(Flat_storage& mesh, Insertion_scratch& scratch, Slots slots,
                   const Static_filter& filter = Static_filter(),
-                  const Sub_determinant_filter& sub_filter = Sub_determinant_filter())
-      : m_(mesh), s_(scratch), filter_(filter), sub_filter_(sub_filter)
+                  const Sub_determinant_filter& sub_filter = Sub_determinant_filter(),
+                  const Ownership& ownership = Ownership())
+      : m_(mesh), s_(scratch), slots_(slots), filter_(filter), sub_filter_(sub_filter), ownership_(ownership)
   {}
+
+  Slots& slots() { return slots_; }
 
   // Inserts vertex v.  `hint` is a live tetrahedron where the walk starts; on
   // return it is a tetrahedron near v.  A point equal to an existing vertex
@@ -128,6 +176,10 @@ public:
     if(s_.timed) t0 = Clock::now();
     const Tet_id start = walk(hint, p);
     if(s_.timed) t1 = Clock::now();
+    if(Ownership::partitioned && start == no_tet) {
+      ++s_.stats.aborted;
+      return Insertion_result::aborted;
+    }
 
     if(!m_.is_ghost(start)) {
       for(int i = 0; i < 4; ++i) {
@@ -142,9 +194,15 @@ public:
       }
     }
 
-    cavity(start, p);
+    if(!cavity(start, p)) {
+      ++s_.stats.aborted;
+      return Insertion_result::aborted;
+    }
     if(s_.timed) t2 = Clock::now();
-    delaunay_ball(v);
+    if(!delaunay_ball(v)) {
+      ++s_.stats.aborted;
+      return Insertion_result::aborted;
+    }
     if(s_.timed) {
       t3 = Clock::now();
       s_.stats.walk_seconds += seconds(t0, t1);
@@ -159,9 +217,12 @@ public:
   // WALK: a tetrahedron whose closure contains p, or a ghost tetrahedron whose
   // hull facet sees p strictly.  Visibility walk with a random first facet
   // per step, which cannot cycle forever (Devillers, Pion, Teillaud 2002).
+  // Partitioned: no_tet as soon as the walk would enter a tetrahedron the
+  // kernel does not own (the ghost start's real neighbour included).
   Tet_id walk(Tet_id t, const double* p)
   {
     if(m_.is_ghost(t)) t = m_.neighbor(t, 3);
+    if(!ownership_.owns(m_, t)) return no_tet;
     Tet_id previous = Tet_id(-1);
     std::uint64_t steps = 0;
     const std::uint64_t step_limit = 64 + 8 * m_.number_of_slots();
@@ -183,6 +244,7 @@ public:
         }
       }
       if(next == Tet_id(-1)) break;
+      if(!ownership_.owns(m_, next)) return no_tet;
       previous = t;
       t = next;
       if(++steps > step_limit) return locate_by_scan(p);
@@ -227,9 +289,10 @@ private:
 
   // CAVITY: marks every tetrahedron in conflict with p as deleted and lists
   // the boundary facets.  Afterwards: s_.cavity holds exactly the deleted
-  // tetrahedra, no tetrahedron carries Tet_flags::outside, and every boundary facet
-  // has its outside tetrahedron live.
-  void cavity(Tet_id start, const double* p)
+  // tetrahedra, no tetrahedron carries Tet_flags::outside, and every boundary
+  // facet has its outside tetrahedron live.  Partitioned: returns false, with
+  // the mesh as before, when a tetrahedron in conflict is not owned.
+  bool cavity(Tet_id start, const double* p)
   {
     std::vector<Tet_id>& cavity = s_.cavity;
     std::vector<Boundary_facet>& boundary = s_.boundary;
@@ -251,6 +314,10 @@ private:
         if(!has(flags, Tet_flags::outside)) {
           ++s_.stats.conflict_tests;
           if(in_conflict(u, p)) {
+            if(!ownership_.owns(m_, u)) {
+              undo_cavity();
+              return false;
+            }
             m_.tet_flags[u] = flags | Tet_flags::deleted;
             cavity.push_back(u);
             cavity_ghosts_ += m_.is_ghost(u) ? 1 : 0;
@@ -261,9 +328,23 @@ private:
         push_boundary_facet(t, f, code);
       }
     }
-    for(const Boundary_facet& b : boundary)
-      m_.tet_flags[tet_of(b.outside)] = without(m_.tet_flags[tet_of(b.outside)], Tet_flags::outside);
+    clear_outside_flags();
     s_.stats.cavity_tets += cavity.size();
+    return true;
+  }
+
+  void clear_outside_flags()
+  {
+    for(const Boundary_facet& b : s_.boundary)
+      m_.tet_flags[tet_of(b.outside)] = without(m_.tet_flags[tet_of(b.outside)], Tet_flags::outside);
+  }
+
+  // Puts back what CAVITY changed: flags and boundary vertex numbers.
+  void undo_cavity()
+  {
+    for(Tet_id t : s_.cavity) m_.tet_flags[t] = without(m_.tet_flags[t], Tet_flags::deleted);
+    clear_outside_flags();
+    for(Vertex_id v : s_.boundary_vertices) m_.vertices[v].scratch = 0;
   }
 
   void push_boundary_facet(Tet_id t, int f, Facet_code outside)
@@ -293,9 +374,15 @@ private:
   // Facet 0 of a new tetrahedron is the boundary facet; facets 1, 2, 3 contain
   // p and the boundary edges (b,c), (c,a), (a,b), and are glued to the new
   // tetrahedron on the other side of that edge, which sees it reversed.
-  void delaunay_ball(Vertex_id p)
+  // Returns false, with the mesh as before the cavity, when the slot supply
+  // cannot provide the extra tetrahedra (partitioned insertion only).
+  bool delaunay_ball(Vertex_id p)
   {
     const std::size_t facets = s_.boundary.size();
+    if(facets > s_.cavity.size() && !slots_.reserve(facets - s_.cavity.size())) {
+      undo_cavity();
+      return false;
+    }
     take_ball_slots(facets);
     if(s_.boundary_vertices.size() < Insertion_scratch::table_size) {
       glue_with_table(p);
@@ -305,8 +392,9 @@ private:
       ++s_.stats.large_cavities;
     }
     for(Vertex_id v : s_.boundary_vertices) m_.vertices[v].scratch = 0;
-    m_.live_tets += facets - s_.cavity.size();
+    s_.live_delta += static_cast<std::ptrdiff_t>(facets) - static_cast<std::ptrdiff_t>(s_.cavity.size());
     s_.stats.ball_tets += facets;
+    return true;
   }
 
   // New tetrahedra reuse the cavity's slots (cache-hot), then free slots.
@@ -317,9 +405,9 @@ private:
     const std::size_t reused = std::min(facets, s_.cavity.size());
     ball.insert(ball.end(), s_.cavity.begin(), s_.cavity.begin() + reused);
     for(std::size_t k = reused; k < s_.cavity.size(); ++k)
-      m_.free_tets.push_back(s_.cavity[k]); // stays flagged deleted
-    m_.ghost_tets -= cavity_ghosts_;
-    while(ball.size() < facets) ball.push_back(m_.new_tet());
+      slots_.give(s_.cavity[k]); // stays flagged deleted
+    s_.ghost_delta -= static_cast<std::ptrdiff_t>(cavity_ghosts_);
+    while(ball.size() < facets) ball.push_back(slots_.take());
   }
 
   void write_ball_tet(Tet_id t, Vertex_id p, const Boundary_facet& b)
@@ -329,7 +417,7 @@ private:
     m_.tet_neighbors[4 * t] = b.outside;
     m_.tet_neighbors[b.outside] = facet_code(t, 0);
     m_.tet_flags[t] = Tet_flags::none;
-    if(b.v[2] == ghost_vertex) ++m_.ghost_tets;
+    if(b.v[2] == ghost_vertex) ++s_.ghost_delta;
     if(m_.with_sub_determinants) update_sub_determinants(m_, t);
   }
 
@@ -411,8 +499,10 @@ private:
 
   Flat_storage& m_;
   Insertion_scratch& s_;
+  Slots slots_;
   Static_filter filter_;
   Sub_determinant_filter sub_filter_;
+  Ownership ownership_;
   std::size_t cavity_ghosts_ = 0;
 };
 

@@ -170,8 +170,8 @@ private:
   {
     Insertion_scratch scratch;
     scratch.timed = timed;
-    Delaunay_kernel kernel(mesh, scratch, Static_filter::for_box(box_lo_, box_hi_),
-                           Sub_determinant_filter::for_box(box_lo_, box_hi_));
+    Delaunay_kernel<> kernel(mesh, scratch, Mesh_slots{&mesh}, Static_filter::for_box(box_lo_, box_hi_),
+                             Sub_determinant_filter::for_box(box_lo_, box_hi_));
     if(!mesh.is_live(hint_)) hint_ = first_live_tet();
     const Clock::time_point t0 = Clock::now();
     for(Vertex_id v = begin; v < end; ++v) {
@@ -182,6 +182,8 @@ private:
         duplicate_of[v - first_new] = existing;
       }
     }
+    mesh.live_tets += scratch.live_delta;
+    mesh.ghost_tets += scratch.ghost_delta;
     last_report.insertion_seconds += seconds(t0, Clock::now());
     last_report.kernel.add(scratch.stats);
   }
