@@ -293,6 +293,12 @@ public:
   // Cache the in-sphere sub-determinants of the paper's §2.4 (32 more bytes
   // per cell); off by default, see Sub_determinants.h for the measurement.
   void set_sub_determinants(bool on) { core_.set_sub_determinants(on); }
+  // Number of Moore partitions inserted concurrently by the parallel engine
+  // (paper §3); 1 is the sequential kernel.  The threads that run them are
+  // those of the caller's TBB arena, so tbb::global_control and
+  // tbb::task_arena limit them as for CGAL's parallel triangulation.
+  void set_number_of_threads(int n) { core_.partitions = std::max(1, std::min(n, 255)); }
+  int number_of_threads() const { return core_.partitions; }
   bool sub_determinants() const { return core_.sub_determinants(); }
 
   // ---------------------------------------------------------------- insertion

@@ -17,6 +17,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/BRIO.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 
 #include <algorithm>
@@ -38,6 +39,8 @@ struct Insertion_report
   std::size_t points = 0;
   double sort_seconds = 0, init_seconds = 0, insertion_seconds = 0, finish_seconds = 0;
   Kernel_statistics kernel;
+  // Partitioned insertion: one row per attempt (paper's Table 2); empty when sequential.
+  std::vector<Partition_round> rounds;
 };
 
 class Triangulation_core
@@ -46,7 +49,9 @@ public:
   Flat_storage mesh;
   int dimension = -1;
   std::uint64_t seed = 0;
-  bool timed = false; // per-phase times (costs two clock reads per phase and point)
+  bool timed = false; // per-phase times (four clock reads per point)
+  // Moore partitions inserted concurrently (1: sequential kernel only).
+  int partitions = 1;
 
   bool sub_determinants() const { return mesh.with_sub_determinants; }
   // Caches the in-sphere sub-determinants of every tetrahedron (or drops them).
@@ -127,9 +132,9 @@ public:
     std::vector<Vertex_id> duplicate_of(n, ghost_vertex);
     if(dimension == 3) {
       mesh.reserve_tets(expected_tets(n));
-      insert_range(first_new, first_new + n, first_new, duplicate_of);
+      insert_new_vertices(first_new, order.round_end, duplicate_of, nullptr);
     } else {
-      build_or_stay_low_dimensional(first_new, duplicate_of);
+      build_or_stay_low_dimensional(first_new, order.round_end, duplicate_of);
     }
     const Clock::time_point t2 = Clock::now();
     const std::size_t added = remove_duplicates(first_new, duplicate_of);
@@ -206,6 +211,37 @@ private:
     }
   }
 
+  // The new vertices [first_new, end) in their BRIO rounds: sequentially, or
+  // round by round with the partitioned engine (the first round always
+  // sequential, paper §3.4).
+  void insert_new_vertices(Vertex_id first_new, const std::vector<std::size_t>& round_end,
+                           std::vector<Vertex_id>& duplicate_of, const Vertex_id* skip)
+  {
+    const Vertex_id end = static_cast<Vertex_id>(number_of_vertices());
+    if(partitions <= 1) {
+      insert_range(first_new, end, first_new, duplicate_of, skip);
+      return;
+    }
+    const Clock::time_point t0 = Clock::now();
+    Partitioned_insertion engine(mesh, Static_filter::for_box(box_lo_, box_hi_),
+                                 Sub_determinant_filter::for_box(box_lo_, box_hi_), box_lo_, box_hi_,
+                                 seed, timed);
+    engine.set_vertices_in_mesh(first_new);
+    std::size_t begin = 0;
+    for(std::size_t r = 0; r < round_end.size(); ++r) {
+      std::vector<Vertex_id> points;
+      points.reserve(round_end[r] - begin);
+      for(std::size_t i = begin; i < round_end[r]; ++i) {
+        const Vertex_id v = static_cast<Vertex_id>(first_new + i);
+        if(!skip || (v != skip[0] && v != skip[1] && v != skip[2] && v != skip[3])) points.push_back(v);
+      }
+      engine.insert(std::move(points), r == 0 ? 1 : partitions, first_new, duplicate_of, hint_,
+                    last_report.rounds, last_report.kernel);
+      begin = round_end[r];
+    }
+    last_report.insertion_seconds += seconds(t0, Clock::now());
+  }
+
   Tet_id first_live_tet() const
   {
     for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
@@ -216,7 +252,8 @@ private:
   // Dimension < 3 before this insertion: find four affinely independent
   // vertices (exactly) among all vertices; if they exist, build the 3D
   // triangulation of everything, else only deduplicate.
-  void build_or_stay_low_dimensional(Vertex_id first_new, std::vector<Vertex_id>& duplicate_of)
+  void build_or_stay_low_dimensional(Vertex_id first_new, const std::vector<std::size_t>& round_end,
+                                     std::vector<Vertex_id>& duplicate_of)
   {
     const Clock::time_point t0 = Clock::now();
     const Vertex_id count = static_cast<Vertex_id>(number_of_vertices());
@@ -232,7 +269,8 @@ private:
     dimension = 3;
     last_report.init_seconds = seconds(t0, Clock::now());
     mesh.reserve_tets(expected_tets(count));
-    insert_range(0, count, first_new, duplicate_of, simplex);
+    insert_range(0, first_new, first_new, duplicate_of, simplex);
+    insert_new_vertices(first_new, round_end, duplicate_of, simplex);
   }
 
   // The dimension of the affine hull of vertices [0, count) (-1 if empty),
@@ -343,9 +381,14 @@ private:
     auto final_id = [&](Vertex_id v) { return v < first_new ? v : new_id[v - first_new]; };
     if(added != n) {
       mesh.vertices.resize(next);
-      for(std::size_t k = 0; k < mesh.tet_vertices.size(); ++k) {
-        const Vertex_id v = mesh.tet_vertices[k];
-        if(v != ghost_vertex && v >= first_new) mesh.tet_vertices[k] = new_id[v - first_new];
+      // Free slots are skipped: those reserved for a partition and never used
+      // hold no vertex ids at all.
+      for(Tet_id t = 0; t < mesh.number_of_slots(); ++t) {
+        if(!mesh.is_live(t)) continue;
+        for(int i = 0; i < 4; ++i) {
+          Vertex_id& v = mesh.tet_vertices[4 * t + i];
+          if(v != ghost_vertex && v >= first_new) v = new_id[v - first_new];
+        }
       }
     }
     for(std::size_t i = 0; i < n; ++i)

@@ -1,0 +1,320 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Moore-partitioned, lock-free parallel insertion (paper §3).
+//
+// The points of a BRIO round are cut into `partitions` runs of equal size
+// along the Moore curve; every vertex of the mesh belongs to the partition
+// whose key range holds its own Moore key.  Each partition is inserted by one
+// task with the ordinary kernel, restricted to the tetrahedra whose vertices
+// are all in its partition (Partition_ownership): an insertion whose walk or
+// cavity reaches another tetrahedron is aborted and kept for the next
+// attempt.  Later attempts change the partitions with a new coordinate
+// transform of the curve's grid and a circular shift of the curve (§3.3); the
+// number of partitions halves when fewer than 1/5 of the attempts succeed or
+// fewer than `min_points_per_partition` points per partition remain, down to
+// a sequential finish (§3.4).  The first BRIO round is always sequential.
+//
+// Memory (§3.6): before an attempt the arrays get room for every partition's
+// worst case, and each partition takes fresh slots from its own fixed range,
+// so no array moves while tasks run and the slots a partition uses do not
+// depend on scheduling: the result is the same cell for cell for the same
+// input, seed and partition count, whatever the thread count.  Tasks run in
+// the caller's TBB arena, so tbb::global_control and tbb::task_arena limit
+// the threads as they do for CGAL's parallel triangulation.
+
+#ifndef CGAL_FDT3_INTERNAL_PARALLEL_INSERTION_H
+#define CGAL_FDT3_INTERNAL_PARALLEL_INSERTION_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Moore_curve.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Radix_sort.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// One attempt of the partitioned insertion: the paper's Table 2 row.
+struct Partition_round
+{
+  std::size_t points = 0;          // points tried
+  std::size_t inserted = 0;        // inserted (duplicates included)
+  int partitions = 1;              // 1: sequential
+  std::size_t mesh_vertices = 0;   // vertices in the mesh before the attempt
+  double seconds = 0;
+};
+
+// Fresh tetrahedron slots of one partition: its own free list first, then a
+// fixed range of new slots reserved for it before the tasks start.
+struct Partition_slots
+{
+  Flat_storage* mesh;
+  std::vector<Tet_id>* free;
+  Tet_id next_fresh, end_fresh;
+
+  bool reserve(std::size_t n) const
+  {
+    return free->size() + static_cast<std::size_t>(end_fresh - next_fresh) >= n;
+  }
+  Tet_id take()
+  {
+    if(!free->empty()) {
+      const Tet_id t = free->back();
+      free->pop_back();
+      return t;
+    }
+    CGAL_assertion(next_fresh < end_fresh);
+    return next_fresh++;
+  }
+  void give(Tet_id t) { free->push_back(t); }
+};
+
+class Partitioned_insertion
+{
+public:
+  static constexpr std::size_t min_points_per_partition = 3000;
+
+  Partitioned_insertion(Flat_storage& mesh, const Static_filter& filter,
+                        const Sub_determinant_filter& sub_filter, const double box_lo[3],
+                        const double box_hi[3], std::uint64_t seed, bool timed)
+      : m_(mesh), filter_(filter), sub_filter_(sub_filter), seed_(seed), timed_(timed)
+  {
+    for(int a = 0; a < 3; ++a) {
+      lo_[a] = box_lo[a];
+      hi_[a] = box_hi[a];
+    }
+  }
+
+  // Inserts `points` (vertex ids whose records are written) with up to
+  // `partitions` concurrent partitions.  duplicate_of[v - first_new] receives
+  // the existing vertex for a duplicate.  Appends one row per attempt to
+  // `rounds` and the kernels' counters to `stats`.
+  void insert(std::vector<Vertex_id> points, int partitions, Vertex_id first_new,
+              std::vector<Vertex_id>& duplicate_of, Tet_id& hint, std::vector<Partition_round>& rounds,
+              Kernel_statistics& stats)
+  {
+    int attempt = 0;
+    while(!points.empty()) {
+      while(partitions > 1 && points.size() < min_points_per_partition * std::size_t(partitions))
+        partitions /= 2;
+      Partition_round row;
+      row.points = points.size();
+      row.partitions = partitions;
+      row.mesh_vertices = vertices_in_mesh_;
+      const auto t0 = std::chrono::steady_clock::now();
+      if(partitions <= 1) {
+        insert_sequentially(points, first_new, duplicate_of, hint, stats);
+        row.inserted = row.points;
+        points.clear();
+      } else {
+        std::vector<Vertex_id> failed;
+        insert_partitioned(points, partitions, attempt++, first_new, duplicate_of, failed, stats);
+        row.inserted = points.size() - failed.size();
+        points.swap(failed);
+        if(5 * row.inserted < row.points) partitions /= 2;
+      }
+      vertices_in_mesh_ += row.inserted;
+      row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      rounds.push_back(row);
+    }
+    if(!m_.is_live(hint)) hint = first_live_tet(m_);
+  }
+
+  void set_vertices_in_mesh(std::size_t n) { vertices_in_mesh_ = n; }
+
+  static Tet_id first_live_tet(const Flat_storage& m)
+  {
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t)
+      if(m.is_live(t)) return t;
+    return 0;
+  }
+
+private:
+  void insert_sequentially(const std::vector<Vertex_id>& points, Vertex_id first_new,
+                           std::vector<Vertex_id>& duplicate_of, Tet_id& hint, Kernel_statistics& stats)
+  {
+    Insertion_scratch scratch;
+    scratch.timed = timed_;
+    Delaunay_kernel<> kernel(m_, scratch, Mesh_slots{&m_}, filter_, sub_filter_);
+    if(!m_.is_live(hint)) hint = first_live_tet(m_);
+    for(Vertex_id v : points) {
+      Vertex_id existing = ghost_vertex;
+      if(kernel.insert(v, hint, existing) == Insertion_result::duplicate)
+        duplicate_of[v - first_new] = existing;
+    }
+    m_.live_tets += scratch.live_delta;
+    m_.ghost_tets += scratch.ghost_delta;
+    stats.add(scratch.stats);
+  }
+
+  // Moore keys on a transformed grid (§3.3): attempt 0 uses the plain curve;
+  // later attempts move the split of every axis and rotate the curve, so the
+  // new partition borders cross the regions where the old ones failed.
+  struct Curve_transform
+  {
+    double split[3] = {0.5, 0.5, 0.5};
+    std::uint64_t shift = 0;
+  };
+
+  Curve_transform transform_for(int attempt) const
+  {
+    Curve_transform c;
+    if(attempt == 0) return c;
+    std::mt19937_64 rng(seed_ * 0x9e3779b97f4a7c15ull + std::uint64_t(attempt));
+    std::uniform_real_distribution<double> split(0.2, 0.8);
+    for(double& s : c.split) s = split(rng);
+    c.shift = rng();
+    return c;
+  }
+
+  void insert_partitioned(const std::vector<Vertex_id>& points, int partitions, int attempt,
+                          Vertex_id first_new, std::vector<Vertex_id>& duplicate_of,
+                          std::vector<Vertex_id>& failed, Kernel_statistics& stats)
+  {
+    // Keys of the points to insert, sorted; cut into equal runs at key changes.
+    const int bits = 16;
+    const Moore_curve curve(bits);
+    const Curve_transform transform = transform_for(attempt);
+    const Moore_grid grid(lo_, hi_, bits, transform.split);
+    const std::uint64_t key_mask = (std::uint64_t(1) << (3 * bits)) - 1;
+    auto key_of = [&](Vertex_id v) { return (grid.key(curve, m_.point(v)) + transform.shift) & key_mask; };
+
+    std::vector<Key_value<std::uint32_t>> items(points.size()), scratch_items;
+    const int chunks = chunk_count(points.size(), partitions);
+    for_each_chunk(chunks, [&](int c) {
+      for(std::size_t i = chunk_begin(points.size(), chunks, c); i < chunk_begin(points.size(), chunks, c + 1); ++i)
+        items[i] = {key_of(points[i]), points[i]};
+    });
+    radix_sort(items, scratch_items, 3 * bits, partitions);
+
+    // Partition j holds keys in [first_key[j], first_key[j + 1]).
+    std::vector<std::size_t> cut(partitions + 1);
+    std::vector<std::uint64_t> first_key(partitions + 1);
+    cut[0] = 0;
+    first_key[0] = 0;
+    for(int j = 1; j < partitions; ++j) {
+      std::size_t c = std::max(cut[j - 1], points.size() * std::size_t(j) / std::size_t(partitions));
+      while(c > 0 && c < items.size() && items[c].key == items[c - 1].key) ++c;
+      cut[j] = c;
+      first_key[j] = c < items.size() ? items[c].key : key_mask + 1;
+    }
+    cut[partitions] = items.size();
+    first_key[partitions] = key_mask + 1;
+
+    // The partition of every vertex that may be in a tetrahedron.
+    partition_of_vertex_.resize(m_.vertices.size());
+    const std::size_t nv = m_.vertices.size();
+    const int vertex_chunks = chunk_count(nv, partitions);
+    for_each_chunk(vertex_chunks, [&](int c) {
+      for(std::size_t v = chunk_begin(nv, vertex_chunks, c); v < chunk_begin(nv, vertex_chunks, c + 1); ++v) {
+        const std::uint64_t k = key_of(static_cast<Vertex_id>(v));
+        int j = 0;
+        while(j + 1 < partitions && k >= first_key[j + 1]) ++j;
+        partition_of_vertex_[v] = static_cast<std::uint8_t>(j);
+      }
+    });
+
+    // Room for every partition's worst case, fixed before the tasks start.
+    std::vector<Tet_id> fresh_begin(partitions + 1);
+    fresh_begin[0] = m_.number_of_slots();
+    for(int j = 0; j < partitions; ++j)
+      fresh_begin[j + 1] = fresh_begin[j] + 8 * (cut[j + 1] - cut[j]) + 1024;
+    grow_arrays(fresh_begin[partitions]);
+
+    std::vector<Tet_id> hints = owned_start_tets(partitions);
+    std::vector<std::vector<Tet_id>> free_lists(partitions);
+    for(std::size_t k = 0; k < m_.free_tets.size(); ++k)
+      free_lists[k % partitions].push_back(m_.free_tets[k]);
+    m_.free_tets.clear();
+    std::vector<Insertion_scratch> scratches(partitions);
+    std::vector<std::vector<Vertex_id>> failures(partitions);
+    std::vector<Tet_id> next_fresh(partitions);
+
+    for_each_chunk(partitions, [&](int j) {
+      Insertion_scratch& scratch = scratches[j];
+      scratch.timed = timed_;
+      Partition_ownership ownership;
+      ownership.partition_of_vertex = partition_of_vertex_.data();
+      ownership.partition = static_cast<std::uint8_t>(j);
+      Delaunay_kernel<Partition_ownership, Partition_slots> kernel(
+          m_, scratch, Partition_slots{&m_, &free_lists[j], fresh_begin[j], fresh_begin[j + 1]}, filter_,
+          sub_filter_, ownership);
+      Tet_id hint = hints[j];
+      for(std::size_t i = cut[j]; i < cut[j + 1]; ++i) {
+        const Vertex_id v = items[i].value;
+        Vertex_id existing = ghost_vertex;
+        const Insertion_result r =
+            hint == no_tet ? Insertion_result::aborted : kernel.insert(v, hint, existing);
+        if(r == Insertion_result::duplicate) duplicate_of[v - first_new] = existing;
+        else if(r == Insertion_result::aborted) failures[j].push_back(v);
+      }
+      next_fresh[j] = kernel.slots().next_fresh;
+    });
+
+    // Unused fresh slots and the partitions' free lists go back to the mesh.
+    for(int j = 0; j < partitions; ++j) {
+      m_.live_tets += scratches[j].live_delta;
+      m_.ghost_tets += scratches[j].ghost_delta;
+      stats.add(scratches[j].stats);
+      for(Tet_id t = next_fresh[j]; t < fresh_begin[j + 1]; ++t) {
+        m_.tet_flags[t] = Tet_flags::deleted;
+        if(j + 1 < partitions) m_.free_tets.push_back(t);
+      }
+      m_.free_tets.insert(m_.free_tets.end(), free_lists[j].begin(), free_lists[j].end());
+      failed.insert(failed.end(), failures[j].begin(), failures[j].end());
+    }
+    // The last partition's unused range is simply cut off the arrays.
+    shrink_arrays(next_fresh[partitions - 1]);
+  }
+
+  void grow_arrays(std::size_t slots)
+  {
+    m_.tet_vertices.resize(4 * slots);
+    m_.tet_neighbors.resize(4 * slots);
+    m_.tet_flags.resize(slots);
+    if(m_.with_sub_determinants) m_.tet_sub_determinants.resize(4 * slots);
+  }
+  void shrink_arrays(std::size_t slots) { grow_arrays(slots); }
+
+  // A live tetrahedron owned by each partition (no_tet if none), found by one
+  // sequential scan before the tasks start, so that no task reads cells
+  // another task is rewriting.
+  std::vector<Tet_id> owned_start_tets(int partitions) const
+  {
+    std::vector<Tet_id> hints(partitions, no_tet);
+    int missing = partitions;
+    Partition_ownership ownership;
+    ownership.partition_of_vertex = partition_of_vertex_.data();
+    for(Tet_id t = 0; t < m_.number_of_slots() && missing > 0; ++t) {
+      if(!m_.is_live(t)) continue;
+      const std::uint8_t j = partition_of_vertex_[m_.vertex(t, 0)];
+      if(hints[j] != no_tet) continue;
+      ownership.partition = j;
+      if(ownership.owns(m_, t)) {
+        hints[j] = t;
+        --missing;
+      }
+    }
+    return hints;
+  }
+
+  Flat_storage& m_;
+  Static_filter filter_;
+  Sub_determinant_filter sub_filter_;
+  double lo_[3], hi_[3];
+  std::uint64_t seed_;
+  bool timed_;
+  std::size_t vertices_in_mesh_ = 0;
+  std::vector<std::uint8_t> partition_of_vertex_;
+};
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_PARALLEL_INSERTION_H
