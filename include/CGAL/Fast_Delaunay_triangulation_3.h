@@ -22,6 +22,11 @@
 #include <CGAL/Triangulation_utils_3.h>
 #include <CGAL/enum.h>
 #include <CGAL/utility.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
 
 #include <iostream>
 #include <iterator>
@@ -31,6 +36,15 @@
 #include <vector>
 
 namespace CGAL {
+
+namespace Fast_Delaunay_triangulation_3_internal {
+// The concurrency tag of a CGAL Triangulation_data_structure_3 (Sequential_tag
+// for Default or a data structure without one).
+template <class Tds, class = void>
+struct Concurrency_of { typedef Sequential_tag type; };
+template <class Tds>
+struct Concurrency_of<Tds, std::void_t<typename Tds::Concurrency_tag>> { typedef typename Tds::Concurrency_tag type; };
+} // namespace Fast_Delaunay_triangulation_3_internal
 
 template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
           class Location_policy = Default, class Lock_data_structure_ = Default>
@@ -47,6 +61,12 @@ class Fast_Delaunay_triangulation_3 : public Triangulation_utils_3
 
 public:
   typedef Gt Geom_traits;
+  // With a Triangulation_data_structure_3<..., Parallel_tag>, insertions use
+  // the parallel engine on the threads of the caller's TBB arena, as CGAL's
+  // parallel triangulation does.  The lock data structure is accepted for
+  // compatibility and not needed: the engine partitions space instead.
+  typedef typename Fast_Delaunay_triangulation_3_internal::Concurrency_of<Tds_>::type Concurrency_tag;
+  typedef typename Default::Get<Lock_data_structure_, void>::type Lock_data_structure;
   typedef typename Gt::Point_3 Point;
   typedef typename Gt::Segment_3 Segment;
   typedef typename Gt::Triangle_3 Triangle;
@@ -235,19 +255,40 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Insertion_report Insertion_report;
 
   // ---------------------------------------------------------------- creation
-  explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits()) : traits_(gt) {}
+  explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits(),
+                                         Lock_data_structure* lock_ds = nullptr)
+      : traits_(gt), lock_ds_(lock_ds)
+  {}
+  explicit Fast_Delaunay_triangulation_3(Lock_data_structure* lock_ds, const Geom_traits& gt = Geom_traits())
+      : traits_(gt), lock_ds_(lock_ds)
+  {}
 
   template <class InputIterator>
   Fast_Delaunay_triangulation_3(InputIterator first, InputIterator last,
+                                const Geom_traits& gt = Geom_traits(),
+                                Lock_data_structure* lock_ds = nullptr)
+      : traits_(gt), lock_ds_(lock_ds)
+  {
+    insert(first, last);
+  }
+  template <class InputIterator>
+  Fast_Delaunay_triangulation_3(InputIterator first, InputIterator last, Lock_data_structure* lock_ds,
                                 const Geom_traits& gt = Geom_traits())
-      : traits_(gt)
+      : traits_(gt), lock_ds_(lock_ds)
   {
     insert(first, last);
   }
 
-  Fast_Delaunay_triangulation_3(const Self& other) : traits_(other.traits_), core_(other.core_) {}
+  Lock_data_structure* get_lock_data_structure() const { return lock_ds_; }
+  void set_lock_data_structure(Lock_data_structure* lock_ds) { lock_ds_ = lock_ds; }
+  bool is_parallel() const { return std::is_same<Concurrency_tag, Parallel_tag>::value; }
+
+  Fast_Delaunay_triangulation_3(const Self& other)
+      : traits_(other.traits_), core_(other.core_), lock_ds_(other.lock_ds_), threads_(other.threads_)
+  {}
   Fast_Delaunay_triangulation_3(Self&& other) noexcept
-      : traits_(std::move(other.traits_)), core_(std::move(other.core_))
+      : traits_(std::move(other.traits_)), core_(std::move(other.core_)), lock_ds_(other.lock_ds_),
+        threads_(other.threads_)
   {
     other.core_.clear();
   }
@@ -256,6 +297,8 @@ public:
     if(this != &other) {
       traits_ = other.traits_;
       core_ = other.core_;
+      lock_ds_ = other.lock_ds_;
+      threads_ = other.threads_;
       incident_cells_.clear();
     }
     return *this;
@@ -265,6 +308,8 @@ public:
     if(this != &other) {
       traits_ = std::move(other.traits_);
       core_ = std::move(other.core_);
+      lock_ds_ = other.lock_ds_;
+      threads_ = other.threads_;
       other.core_.clear();
       incident_cells_.clear();
       other.incident_cells_.clear();
@@ -275,6 +320,8 @@ public:
   {
     std::swap(traits_, other.traits_);
     std::swap(core_, other.core_);
+    std::swap(lock_ds_, other.lock_ds_);
+    std::swap(threads_, other.threads_);
     incident_cells_.clear();
     other.incident_cells_.clear();
   }
@@ -297,8 +344,10 @@ public:
   // (paper §3); 1 is the sequential kernel.  The threads that run them are
   // those of the caller's TBB arena, so tbb::global_control and
   // tbb::task_arena limit them as for CGAL's parallel triangulation.
-  void set_number_of_threads(int n) { core_.partitions = std::max(1, std::min(n, 255)); }
-  int number_of_threads() const { return core_.partitions; }
+  // 0 (the default with Parallel_tag) means one partition per thread of the
+  // caller's arena; the default with Sequential_tag is 1.
+  void set_number_of_threads(int n) { threads_ = std::max(0, std::min(n, 255)); }
+  int number_of_threads() const { return threads_; }
   bool sub_determinants() const { return core_.sub_determinants(); }
 
   // ---------------------------------------------------------------- insertion
@@ -315,6 +364,7 @@ public:
     const std::size_t n = xyz.size() / 3;
     Core::check_finite(xyz.data(), n);
     incident_cells_.clear();
+    core_.partitions = partitions_for_insertion();
     return static_cast<std::ptrdiff_t>(core_.insert(xyz.data(), n, nullptr));
   }
 
@@ -521,6 +571,16 @@ public:
   }
 
 private:
+  int partitions_for_insertion() const
+  {
+    if(threads_ > 0) return threads_;
+#ifdef CGAL_LINKED_WITH_TBB
+    return std::max(1, std::min(255, tbb::this_task_arena::max_concurrency()));
+#else
+    return 1;
+#endif
+  }
+
   std::size_t cell_slots() const { return dimension() < 3 ? 0 : core_.mesh.number_of_slots(); }
   Vertex_id vertex_count() const { return static_cast<Vertex_id>(number_of_vertices()); }
 
@@ -560,6 +620,8 @@ private:
 
   Geom_traits traits_;
   Core core_;
+  Lock_data_structure* lock_ds_ = nullptr;
+  int threads_ = std::is_same<Concurrency_tag, Parallel_tag>::value ? 0 : 1;
   mutable std::vector<Tet_id> incident_cells_; // lazily built v->cell() cache
 };
 

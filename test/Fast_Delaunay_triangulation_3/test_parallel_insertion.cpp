@@ -6,6 +6,10 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_3.h>
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
@@ -101,6 +105,31 @@ TEST(Parallel_insertion, IntoNonEmptyTriangulation)
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
+// CGAL's parallel idiom, unchanged but for the class name: a Parallel_tag data
+// structure, a lock grid over the bounding box, tbb::global_control.
+TEST(Parallel_insertion, CgalParallelIdiom)
+{
+  typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
+                                               CGAL::Delaunay_triangulation_cell_base_3<K>, CGAL::Parallel_tag>
+      Tds;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds> Parallel_fast_dt;
+  typedef CGAL::Delaunay_triangulation_3<K, Tds> Parallel_cgal_dt;
+  const std::vector<Point> points = to_points<Point>(make_points("uniform", points_per_case, 24));
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
+  Parallel_cgal_dt::Lock_data_structure cgal_locks(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 50);
+  Parallel_fast_dt::Lock_data_structure* no_locks = nullptr;
+  Parallel_fast_dt fast(points.begin(), points.end(), no_locks);
+  Parallel_cgal_dt cgal(points.begin(), points.end(), &cgal_locks);
+  EXPECT_TRUE(fast.is_parallel());
+  EXPECT_EQ(fast.number_of_threads(), 0); // one partition per thread of the arena
+  std::size_t partitioned = 0;
+  for(const auto& r : fast.last_insertion_report().rounds)
+    if(r.partitions == 2) partitioned += r.inserted;
+  EXPECT_GT(partitioned, points.size() / 2);
+  ASSERT_TRUE(fast.is_valid(true));
+  EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+}
+
 // Limited to one thread by the caller's arena, the partitions run one after
 // the other: the result must not change.
 TEST(Parallel_insertion, InsideSingleThreadArena)
