@@ -1,0 +1,744 @@
+// The side-by-side benchmark of issue 2 (and the parallel columns of issue 3): Fast_Delaunay_triangulation_3 beside
+// CGAL::Delaunay_triangulation_3 on the same points, printing seconds, tetrahedra, Mtets/s, peak memory and the
+// speed-up over CGAL's sequential triangulation, plus our per-phase breakdown in the shape of the paper's Table 1.
+//
+// Every engine run is a forked child process, so that the peak RSS it reports belongs to that engine alone. The
+// points are generated once per (n, distribution) in the parent before forking; each child therefore also holds
+// them, equally for every engine, and each table states that baseline. Engines are interleaved round by round
+// (round r: fast, cgal, cgal-par, ...) so that a drift of the machine hits them alike; the table shows medians.
+//
+// Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all] [--engines fast,cgal,cgal-par,fast-par]
+//                           [--rounds 3] [--threads 2[,1...]] [--phases] [--csv]
+
+#include <CGAL/Fast_Delaunay_triangulation_3.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/version.h>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Spatial_lock_grid_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_3.h>
+#include <tbb/global_control.h>
+#include <tbb/version.h>
+#endif
+
+#include "../../test/Fast_Delaunay_triangulation_3/point_sets.h"
+
+#include <malloc.h>
+#include <sched.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef std::vector<Point> Points;
+typedef CGAL::Fast_Delaunay_triangulation_3<Kernel> Fast_dt;
+typedef CGAL::Delaunay_triangulation_3<Kernel> Cgal_dt;
+typedef Fast_dt::Insertion_report Insertion_report;
+typedef std::chrono::steady_clock Clock;
+
+// ------------------------------------------------------------------------------------------------ engines
+
+// Our Table 1 breakdown, copied field by field out of Insertion_report so that it stays plain bytes.
+struct Phase_report
+{
+  double sort_seconds = 0, init_seconds = 0, walk_seconds = 0, cavity_seconds = 0, ball_seconds = 0;
+  std::uint64_t inserted = 0, duplicates = 0, walk_steps = 0, cavity_tets = 0, ball_tets = 0, conflict_tests = 0;
+  std::uint64_t small_cavities = 0, large_cavities = 0;
+};
+
+Phase_report phase_report_of(const Insertion_report& r)
+{
+  Phase_report p;
+  p.sort_seconds = r.sort_seconds;
+  p.init_seconds = r.init_seconds;
+  p.walk_seconds = r.kernel.walk_seconds;
+  p.cavity_seconds = r.kernel.cavity_seconds;
+  p.ball_seconds = r.kernel.ball_seconds;
+  p.inserted = r.kernel.inserted;
+  p.duplicates = r.kernel.duplicates;
+  p.walk_steps = r.kernel.walk_steps;
+  p.cavity_tets = r.kernel.cavity_tets;
+  p.ball_tets = r.kernel.ball_tets;
+  p.conflict_tests = r.kernel.conflict_tests;
+  p.small_cavities = r.kernel.small_cavities;
+  p.large_cavities = r.kernel.large_cavities;
+  return p;
+}
+
+// What one run of an engine sends back. Trivially copyable: it crosses the pipe from the child as bytes.
+struct Engine_result
+{
+  double seconds = 0;                // insertion of all points into an empty triangulation
+  std::uint64_t finite_cells = 0;
+  bool has_phases = false;
+  Phase_report phases;               // when has_phases
+};
+static_assert(std::is_trivially_copyable<Engine_result>::value, "Engine_result is sent through a pipe");
+
+double seconds_since(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Times only the insertion; counting the cells and destroying the triangulation stay outside the clock.
+template <class Triangulation>
+Engine_result insert_and_count(Triangulation& triangulation, const Points& points)
+{
+  Engine_result result;
+  const Clock::time_point start = Clock::now();
+  triangulation.insert(points.begin(), points.end());
+  result.seconds = seconds_since(start);
+  result.finite_cells = triangulation.number_of_finite_cells();
+  return result;
+}
+
+Engine_result run_fast(const Points& points, int /*threads*/)
+{
+  Fast_dt triangulation;
+  return insert_and_count(triangulation, points);
+}
+
+// The same as run_fast with the per-phase clocks on; a separate run, because the clock reads cost time.
+Engine_result run_fast_with_phases(const Points& points, int /*threads*/)
+{
+  Fast_dt triangulation;
+  triangulation.set_phase_timing(true);
+  Engine_result result = insert_and_count(triangulation, points);
+  result.has_phases = true;
+  result.phases = phase_report_of(triangulation.last_insertion_report());
+  return result;
+}
+
+Engine_result run_cgal(const Points& points, int /*threads*/)
+{
+  Cgal_dt triangulation;
+  return insert_and_count(triangulation, points);
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<Kernel>,
+                                             CGAL::Delaunay_triangulation_cell_base_3<Kernel>, CGAL::Parallel_tag>
+    Parallel_tds;
+typedef CGAL::Delaunay_triangulation_3<Kernel, Parallel_tds> Cgal_parallel_dt;
+typedef CGAL::Fast_Delaunay_triangulation_3<Kernel, Parallel_tds> Fast_parallel_dt;
+
+// CGAL's parallel idiom as its users write it: a lock grid over the bounding box (50 cells per side, as in CGAL's
+// examples) and the thread count limited by tbb::global_control. Building the lock grid counts as insertion time.
+Engine_result run_cgal_parallel(const Points& points, int threads)
+{
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  const Clock::time_point start = Clock::now();
+  Cgal_parallel_dt::Lock_data_structure locks(CGAL::bbox_3(points.begin(), points.end()), 50);
+  const double lock_seconds = seconds_since(start);
+  Cgal_parallel_dt triangulation(&locks);
+  Engine_result result = insert_and_count(triangulation, points);
+  result.seconds += lock_seconds;
+  return result;
+}
+
+// The same idiom with only the class name changed; ours needs no lock grid (it partitions space instead).
+Engine_result run_fast_parallel(const Points& points, int threads)
+{
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  Fast_parallel_dt triangulation;
+  return insert_and_count(triangulation, points);
+}
+#endif
+
+struct Engine
+{
+  const char* name;
+  bool parallel;   // runs once per --threads value; a sequential engine runs once, on 1 thread
+  bool by_default; // runs when --engines is not given
+  Engine_result (*run)(const Points& points, int threads);
+};
+
+// The engines, in the order of the table; a new engine is one more row and one run function.
+// `cgal` is the reference of the speed-up and of the cell counts.
+const std::vector<Engine>& engine_table()
+{
+  static const std::vector<Engine> engines = {
+      {"fast", false, true, run_fast},
+      {"cgal", false, true, run_cgal},
+#ifdef CGAL_LINKED_WITH_TBB
+      {"cgal-par", true, true, run_cgal_parallel},
+      {"fast-par", true, false, run_fast_parallel},
+#endif
+  };
+  return engines;
+}
+
+const char* const reference_engine = "cgal";
+
+// ------------------------------------------------------------------------------------------------ child processes
+
+struct Child_report
+{
+  bool ok = false;
+  Engine_result result;
+  long peak_kib = 0;     // getrusage(RUSAGE_SELF).ru_maxrss of the child
+  char error[240] = {};
+};
+static_assert(std::is_trivially_copyable<Child_report>::value, "Child_report is sent through a pipe");
+
+void copy_message(char (&to)[240], const char* message)
+{
+  std::snprintf(to, sizeof to, "%s", message);
+}
+
+// Moves `size` bytes with ::read or ::write, resuming after partial transfers and signals.
+template <class Byte, class Transfer>
+bool transfer_all(int fd, Byte* p, std::size_t size, Transfer transfer)
+{
+  while(size > 0) {
+    const ssize_t done = transfer(fd, p, size);
+    if(done < 0 && errno == EINTR) continue;
+    if(done <= 0) return false;
+    p += done;
+    size -= static_cast<std::size_t>(done);
+  }
+  return true;
+}
+
+bool write_all(int fd, const void* data, std::size_t size)
+{
+  return transfer_all(fd, static_cast<const char*>(data), size, ::write);
+}
+
+bool read_all(int fd, void* data, std::size_t size)
+{
+  return transfer_all(fd, static_cast<char*>(data), size, ::read);
+}
+
+// Runs work() -> Engine_result in a forked child and returns what it measured. Linux starts a child's peak RSS at
+// its resident size after fork (the parent's current pages, not the parent's peak), so the peak is this run's own.
+template <class Work>
+Child_report run_in_child(const Work& work)
+{
+  int fds[2];
+  if(::pipe(fds) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
+  std::fflush(nullptr); // nothing buffered may be printed twice
+  const pid_t pid = ::fork();
+  if(pid < 0) throw std::system_error(errno, std::generic_category(), "fork");
+
+  if(pid == 0) {
+    ::close(fds[0]);
+    Child_report report;
+    try {
+      report.result = work();
+      report.ok = true;
+    } catch(const std::exception& e) {
+      copy_message(report.error, e.what());
+    } catch(...) {
+      copy_message(report.error, "an exception that is not a std::exception");
+    }
+    rusage usage;
+    ::getrusage(RUSAGE_SELF, &usage);
+    report.peak_kib = usage.ru_maxrss;
+    _exit(write_all(fds[1], &report, sizeof report) ? 0 : 1);
+  }
+
+  ::close(fds[1]);
+  Child_report report;
+  const bool complete = read_all(fds[0], &report, sizeof report);
+  ::close(fds[0]);
+  int status = 0;
+  while(::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+  if(!complete) {
+    report = Child_report();
+    char why[240];
+    if(WIFSIGNALED(status))
+      std::snprintf(why, sizeof why, "killed by signal %d (%s)", WTERMSIG(status), strsignal(WTERMSIG(status)));
+    else
+      std::snprintf(why, sizeof why, "exited with status %d without a report", WEXITSTATUS(status));
+    copy_message(report.error, why);
+  }
+  return report;
+}
+
+// ------------------------------------------------------------------------------------------------ options
+
+struct Options
+{
+  std::vector<std::size_t> sizes = {1000000};
+  std::vector<std::string> distributions = {"uniform"};
+  std::vector<std::string> engines;   // empty: the engines marked by_default
+  std::vector<int> threads = {2};
+  int rounds = 3;
+  bool phases = false;
+  bool csv = false;
+};
+
+std::vector<std::string> split(const std::string& list)
+{
+  std::vector<std::string> items;
+  std::size_t begin = 0;
+  while(begin <= list.size()) {
+    const std::size_t end = std::min(list.find(',', begin), list.size());
+    if(end > begin) items.push_back(list.substr(begin, end - begin));
+    begin = end + 1;
+  }
+  return items;
+}
+
+std::string join(const std::vector<std::string>& items)
+{
+  std::string all;
+  for(const std::string& item : items) all += (all.empty() ? "" : ",") + item;
+  return all;
+}
+
+// A positive number, also written as 1e6.
+double parse_number(const std::string& text, const char* option)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if(text.empty() || *end != '\0' || !(value >= 1) || value > 1e12)
+    throw std::invalid_argument(std::string(option) + ": '" + text + "' is not a positive number");
+  return value;
+}
+
+const Engine* find_engine(const std::string& name)
+{
+  for(const Engine& engine : engine_table())
+    if(name == engine.name) return &engine;
+  return nullptr;
+}
+
+std::vector<std::string> engine_names(bool default_only)
+{
+  std::vector<std::string> names;
+  for(const Engine& engine : engine_table())
+    if(engine.by_default || !default_only) names.push_back(engine.name);
+  return names;
+}
+
+void print_usage(std::FILE* to)
+{
+  std::fprintf(to,
+               "usage: delaunay_benchmark [options]\n"
+               "  --n LIST        numbers of points, e.g. 1e5,1e6 (default 1e6)\n"
+               "  --dist LIST     uniform, gauss, clusters, sphere, grid, duplicates, offset, tiny, or all\n"
+               "                  (all = the first five; default uniform)\n"
+               "  --engines LIST  among %s (default %s)\n"
+               "  --rounds R      runs of every engine, interleaved; the table shows the median (default 3)\n"
+               "  --threads LIST  thread counts of the parallel engines (default 2)\n"
+               "  --phases        also print our per-phase breakdown (sort, init, walk, cavity, ball, other)\n"
+               "  --csv           comma-separated output; comments start with '#'\n",
+               join(engine_names(false)).c_str(), join(engine_names(true)).c_str());
+}
+
+Options parse_options(int argc, char** argv)
+{
+  Options options;
+  for(int k = 1; k < argc; ++k) {
+    const std::string option = argv[k];
+    auto value = [&]() -> std::string {
+      if(k + 1 >= argc) throw std::invalid_argument(option + " needs a value");
+      return argv[++k];
+    };
+    if(option == "--n") {
+      options.sizes.clear();
+      for(const std::string& item : split(value()))
+        options.sizes.push_back(static_cast<std::size_t>(parse_number(item, "--n")));
+    } else if(option == "--dist") {
+      const std::string list = value();
+      options.distributions = list == "all" ? fdt3_test::distribution_names() : split(list);
+      for(const std::string& name : options.distributions)
+        fdt3_test::make_points(name, 0); // throws on an unknown name
+    } else if(option == "--engines") {
+      options.engines = split(value());
+      for(const std::string& name : options.engines)
+        if(!find_engine(name))
+          throw std::invalid_argument("unknown engine '" + name + "' (known: " + join(engine_names(false)) +
+                                      (name.find("-par") != std::string::npos ? "; parallel engines need TBB" : "") +
+                                      ")");
+    } else if(option == "--rounds") {
+      options.rounds = static_cast<int>(parse_number(value(), "--rounds"));
+    } else if(option == "--threads") {
+      options.threads.clear();
+      for(const std::string& item : split(value()))
+        options.threads.push_back(static_cast<int>(parse_number(item, "--threads")));
+    } else if(option == "--phases") {
+      options.phases = true;
+    } else if(option == "--csv") {
+      options.csv = true;
+    } else if(option == "--help" || option == "-h") {
+      print_usage(stdout);
+      std::exit(0);
+    } else {
+      throw std::invalid_argument("unknown option '" + option + "'");
+    }
+  }
+  if(options.engines.empty()) options.engines = engine_names(true);
+  if(options.sizes.empty() || options.distributions.empty() || options.engines.empty() || options.threads.empty())
+    throw std::invalid_argument("an empty list");
+  return options;
+}
+
+// ------------------------------------------------------------------------------------------------ machine
+
+std::string cpu_model()
+{
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while(std::getline(cpuinfo, line))
+    if(line.compare(0, 10, "model name") == 0) {
+      const std::size_t colon = line.find(':');
+      return colon == std::string::npos ? line : line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  return "unknown CPU";
+}
+
+int usable_cores()
+{
+  cpu_set_t set;
+  return ::sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : -1;
+}
+
+std::string compiler()
+{
+#if defined(__clang__)
+  return "clang " __clang_version__;
+#elif defined(__GNUC__)
+  return "GCC " __VERSION__;
+#else
+  return "unknown compiler";
+#endif
+}
+
+// The 1-minute load average: other work on the machine slows the engines, the parallel ones most.
+double load_average()
+{
+  std::ifstream loadavg("/proc/loadavg");
+  double load = -1;
+  loadavg >> load;
+  return load;
+}
+
+std::string utc_now()
+{
+  const std::time_t now = std::time(nullptr);
+  char text[64];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  return text;
+}
+
+void print_machine(const Options& options)
+{
+  const char* c = options.csv ? "# " : "";
+  std::printf("%sFast_Delaunay_triangulation_3 benchmark, %s\n", c, utc_now().c_str());
+  std::printf("%smachine: %s, %u hardware threads, %d usable by this process\n", c, cpu_model().c_str(),
+              std::thread::hardware_concurrency(), usable_cores());
+  std::printf("%sbuild:   %s, CGAL %s, ", c, compiler().c_str(), CGAL_VERSION_STR);
+#ifdef CGAL_LINKED_WITH_TBB
+  std::printf("TBB %d.%d", TBB_VERSION_MAJOR, TBB_VERSION_MINOR);
+#else
+  std::printf("no TBB");
+#endif
+#ifdef NDEBUG
+  std::printf(", NDEBUG\n");
+#else
+  std::printf(", assertions ON (not a Release build: times are not representative)\n");
+#endif
+  std::printf("%smethod:  every engine run is its own forked process; seconds = insertion into an empty\n"
+              "%s         triangulation, median over the rounds, engines interleaved in each; fast = ours, 1 thread;\n"
+              "%s         peak MiB = the child's max RSS, which includes the input points (generated once in the\n"
+              "%s         parent before forking, %zu bytes each) and the baseline process, alike for every engine\n",
+              c, c, c, c, sizeof(Point));
+}
+
+// ------------------------------------------------------------------------------------------------ measuring
+
+// One row of the table: an engine at a thread count.
+struct Row
+{
+  Row(const Engine* engine, int threads, std::string label) : engine(engine), threads(threads), label(label) {}
+
+  const Engine* engine;
+  int threads;
+  std::string label;            // the engine name, or "fast+phases" for the timed-phases run
+  std::vector<double> seconds;  // one per round
+  std::uint64_t finite_cells = 0;
+  bool cells_vary = false;      // different counts in different rounds
+  long peak_kib = 0;            // the largest over the rounds
+  std::string error;
+  Phase_report phases;
+  bool has_phases = false;
+};
+
+std::vector<Row> rows_of(const Options& options)
+{
+  std::vector<Row> rows;
+  for(const std::string& name : options.engines) {
+    const Engine* engine = find_engine(name);
+    if(engine->parallel)
+      for(int t : options.threads) rows.emplace_back(engine, t, name);
+    else
+      rows.emplace_back(engine, 1, name);
+  }
+  return rows;
+}
+
+void record(Row& row, const Child_report& report)
+{
+  if(!report.ok) {
+    if(row.error.empty()) row.error = report.error;
+    return;
+  }
+  if(!row.seconds.empty() && report.result.finite_cells != row.finite_cells) row.cells_vary = true;
+  row.seconds.push_back(report.result.seconds);
+  row.finite_cells = report.result.finite_cells;
+  row.peak_kib = std::max(row.peak_kib, report.peak_kib);
+  if(report.result.has_phases) {
+    row.has_phases = true;
+    row.phases = report.result.phases;
+  }
+}
+
+double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+}
+
+struct Measurement
+{
+  std::size_t n = 0;
+  std::string distribution;
+  std::size_t input_points = 0; // may differ from n: the grid rounds n up to k^3 and cuts it back
+  long baseline_kib = 0;        // peak RSS of a child that does nothing
+  double load_before = 0;       // load average of the machine when the measurement started
+  std::vector<Row> rows;
+};
+
+Measurement measure(const Options& options, std::size_t n, const std::string& distribution)
+{
+  Measurement m;
+  m.n = n;
+  m.distribution = distribution;
+  m.load_before = load_average();
+  ::malloc_trim(0); // the previous measurement's points must not stay resident in every child
+  const Points points = fdt3_test::to_points<Point>(fdt3_test::make_points(distribution, n));
+  m.input_points = points.size();
+  m.baseline_kib = run_in_child([] { return Engine_result(); }).peak_kib;
+
+  m.rows = rows_of(options);
+  for(int round = 0; round < options.rounds; ++round)
+    for(Row& row : m.rows)
+      record(row, run_in_child([&] { return row.engine->run(points, row.threads); }));
+
+  if(options.phases) {
+    static const Engine fast_with_phases = {"fast", false, false, run_fast_with_phases};
+    Row row(&fast_with_phases, 1, "fast+phases");
+    record(row, run_in_child([&] { return run_fast_with_phases(points, 1); }));
+    m.rows.push_back(row);
+  }
+  return m;
+}
+
+// ------------------------------------------------------------------------------------------------ printing
+
+std::string with_commas(std::uint64_t value)
+{
+  std::string digits = std::to_string(value), text;
+  for(std::size_t i = 0; i < digits.size(); ++i) {
+    if(i > 0 && (digits.size() - i) % 3 == 0) text += ',';
+    text += digits[i];
+  }
+  return text;
+}
+
+double mib(long kib) { return static_cast<double>(kib) / 1024.0; }
+
+const Row* reference_row(const Measurement& m)
+{
+  for(const Row& row : m.rows)
+    if(row.label == reference_engine && !row.seconds.empty()) return &row;
+  return nullptr;
+}
+
+// Speed-up of a row over CGAL's sequential triangulation, or 0 when CGAL did not run.
+double speedup(const Measurement& m, const Row& row)
+{
+  const Row* reference = reference_row(m);
+  if(!reference || row.seconds.empty()) return 0;
+  return median(reference->seconds) / median(row.seconds);
+}
+
+// Our Table 1 breakdown. `total` is the whole insertion as the benchmark timed it; `other` is what the phases do
+// not cover: removal of duplicates, the insertion loop, and the clock reads themselves.
+struct Phase_split
+{
+  double sort, init, walk, cavity, ball, other, total;
+};
+
+Phase_split phase_split(const Row& row)
+{
+  const Phase_report& r = row.phases;
+  Phase_split s;
+  s.sort = r.sort_seconds;
+  s.init = r.init_seconds;
+  s.walk = r.walk_seconds;
+  s.cavity = r.cavity_seconds;
+  s.ball = r.ball_seconds;
+  s.total = row.seconds.front();
+  s.other = s.total - (s.sort + s.init + s.walk + s.cavity + s.ball);
+  return s;
+}
+
+double per_point(std::uint64_t count, const Phase_report& r)
+{
+  return r.inserted ? static_cast<double>(count) / static_cast<double>(r.inserted) : 0.0;
+}
+
+void print_phases(const Row& row)
+{
+  const Phase_split s = phase_split(row);
+  const double part[7] = {s.sort, s.init, s.walk, s.cavity, s.ball, s.other, s.total};
+  std::printf("\nfast per phase (one more run with the phase clocks on; other = finishing, loop and clock reads)\n");
+  std::printf("%-9s %8s %8s %8s %8s %8s %8s %8s\n", "", "sort", "init", "walk", "cavity", "ball", "other", "total");
+  std::printf("%-9s", "seconds");
+  for(double t : part) std::printf(" %8.3f", t);
+  std::printf("\n%-9s", "share");
+  for(double t : part) std::printf(" %7.1f%%", s.total > 0 ? 100 * t / s.total : 0.0);
+  const Phase_report& r = row.phases;
+  const std::uint64_t cavities = r.small_cavities + r.large_cavities;
+  std::printf("\nper inserted point: %.2f walk steps, %.2f cavity tets, %.2f ball tets, %.2f conflict tests\n",
+              per_point(r.walk_steps, r), per_point(r.cavity_tets, r), per_point(r.ball_tets, r),
+              per_point(r.conflict_tests, r));
+  std::printf("cavities: %s small (adjacency table), %s large (fallback, %.4f%%); %s inserted, %s duplicates\n",
+              with_commas(r.small_cavities).c_str(), with_commas(r.large_cavities).c_str(),
+              cavities ? 100.0 * static_cast<double>(r.large_cavities) / static_cast<double>(cavities) : 0.0,
+              with_commas(r.inserted).c_str(), with_commas(r.duplicates).c_str());
+}
+
+// Warnings about cell counts: every engine must find CGAL's finite cells (the first engine's when CGAL did not
+// run), in every round.
+std::vector<std::string> cell_count_warnings(const Measurement& m)
+{
+  std::vector<std::string> warnings;
+  const Row* reference = reference_row(m);
+  for(const Row& row : m.rows) {
+    if(!row.error.empty())
+      warnings.push_back(row.label + " failed: " + row.error);
+    if(row.cells_vary)
+      warnings.push_back(row.label + " found different numbers of finite cells in different rounds");
+    if(!reference && !row.seconds.empty()) reference = &row;
+    if(reference && !row.seconds.empty() && row.finite_cells != reference->finite_cells)
+      warnings.push_back(row.label + " has " + with_commas(row.finite_cells) + " finite cells, " + reference->label +
+                         " has " + with_commas(reference->finite_cells));
+  }
+  return warnings;
+}
+
+void print_table(const Measurement& m, int rounds)
+{
+  std::printf("\nn = %s %s points (%s in the input), %d round%s; baseline peak (process + points) %.0f MiB; "
+              "load average %.2f\n",
+              with_commas(m.n).c_str(), m.distribution.c_str(), with_commas(m.input_points).c_str(), rounds,
+              rounds == 1 ? "" : "s", mib(m.baseline_kib), m.load_before);
+  std::printf("%-12s %7s %9s %13s %8s %9s %9s\n", "engine", "threads", "seconds", "tetrahedra", "Mtets/s", "peak MiB",
+              "vs cgal");
+  for(const Row& row : m.rows) {
+    if(row.seconds.empty()) {
+      std::printf("%-12s %7d   failed: %s\n", row.label.c_str(), row.threads, row.error.c_str());
+      continue;
+    }
+    const double t = median(row.seconds);
+    std::printf("%-12s %7d %9.3f %13s %8.2f %9.0f", row.label.c_str(), row.threads, t,
+                with_commas(row.finite_cells).c_str(), static_cast<double>(row.finite_cells) / t / 1e6,
+                mib(row.peak_kib));
+    const double s = speedup(m, row);
+    if(s > 0) std::printf(" %8.2fx\n", s);
+    else std::printf(" %9s\n", "-");
+  }
+  for(const std::string& warning : cell_count_warnings(m)) std::printf("WARNING: %s\n", warning.c_str());
+  for(const Row& row : m.rows)
+    if(row.has_phases) print_phases(row);
+  std::fflush(stdout);
+}
+
+void print_csv_header()
+{
+  std::printf("n,distribution,input_points,engine,threads,rounds,median_seconds,finite_cells,mtets_per_second,"
+              "peak_mib,baseline_mib,load_average,speedup_vs_cgal,sort_s,init_s,walk_s,cavity_s,ball_s,other_s,total_s,"
+              "walk_steps_per_point,cavity_tets_per_point,ball_tets_per_point,conflict_tests_per_point,"
+              "small_cavities,large_cavities\n");
+}
+
+void print_csv(const Measurement& m)
+{
+  for(const std::string& warning : cell_count_warnings(m)) std::printf("# WARNING: %s\n", warning.c_str());
+  for(const Row& row : m.rows) {
+    if(row.seconds.empty()) continue;
+    const double t = median(row.seconds);
+    std::printf("%zu,%s,%zu,%s,%d,%zu,%.6f,%llu,%.4f,%.1f,%.1f,%.2f,", m.n, m.distribution.c_str(), m.input_points,
+                row.label.c_str(), row.threads, row.seconds.size(), t,
+                static_cast<unsigned long long>(row.finite_cells), static_cast<double>(row.finite_cells) / t / 1e6,
+                mib(row.peak_kib), mib(m.baseline_kib), m.load_before);
+    const double s = speedup(m, row);
+    if(s > 0) std::printf("%.4f", s);
+    if(!row.has_phases) {
+      std::printf(",,,,,,,,,,,,,\n");
+      continue;
+    }
+    const Phase_split p = phase_split(row);
+    const Phase_report& r = row.phases;
+    std::printf(",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f,%llu,%llu\n", p.sort, p.init, p.walk,
+                p.cavity, p.ball, p.other, p.total, per_point(r.walk_steps, r),
+                per_point(r.cavity_tets, r), per_point(r.ball_tets, r),
+                per_point(r.conflict_tests, r), static_cast<unsigned long long>(r.small_cavities),
+                static_cast<unsigned long long>(r.large_cavities));
+  }
+  std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options options;
+  try {
+    options = parse_options(argc, argv);
+  } catch(const std::exception& e) {
+    std::fprintf(stderr, "delaunay_benchmark: %s\n", e.what());
+    print_usage(stderr);
+    return 2;
+  }
+
+  print_machine(options);
+  if(options.csv) print_csv_header();
+  bool all_agree = true;
+  for(std::size_t n : options.sizes)
+    for(const std::string& distribution : options.distributions) {
+      const Measurement m = measure(options, n, distribution);
+      all_agree = all_agree && cell_count_warnings(m).empty();
+      if(options.csv) print_csv(m);
+      else print_table(m, options.rounds);
+    }
+  return all_agree ? 0 : 1;
+}

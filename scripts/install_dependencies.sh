@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs, with apt, whatever this package needs that Debian 12 does not have yet: the compiler, CMake, CGAL and
+# its number types (GMP, MPFR, Boost), TBB for the parallel engines, GoogleTest. Does nothing if all are present.
+set -euo pipefail
+
+packages=(build-essential cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev libgtest-dev)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg -s "$package" 2>/dev/null | grep -q '^Status: install ok installed'; then
+    missing+=("$package")
+  fi
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "install_dependencies: all of ${packages[*]} are installed"
+  exit 0
+fi
+
+if [ "$(id -u)" -eq 0 ]; then
+  as_root=()
+elif command -v sudo >/dev/null 2>&1; then
+  as_root=(sudo)
+else
+  echo "install_dependencies: missing ${missing[*]}, and neither root nor sudo is available to install them" >&2
+  exit 1
+fi
+
+echo "install_dependencies: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
