@@ -105,6 +105,32 @@ inline std::vector<Xyz> scaled_points(std::size_t n, double scale = 1e-9, std::u
   return p;
 }
 
+// All integer points with x^2 + y^2 + z^2 = r2: exactly cospherical, with
+// many coplanar (cocircular) subsets.
+inline std::vector<Xyz> integer_sphere_points(int r2)
+{
+  std::vector<Xyz> p;
+  const int r = static_cast<int>(std::sqrt(static_cast<double>(r2))) + 1;
+  for(int x = -r; x <= r; ++x)
+    for(int y = -r; y <= r; ++y)
+      for(int z = -r; z <= r; ++z)
+        if(x * x + y * y + z * z == r2) p.push_back({double(x), double(y), double(z)});
+  return p;
+}
+
+// The 12 integer points of the circle u^2 + v^2 = 25, mapped by u*a + v*b
+// with a = (1, 2, 2), b = (2, 1, -2): orthogonal, both of length 3, so the
+// image is exactly a circle of radius 15 around the origin, in the plane
+// normal to (2, -2, 1).
+inline std::vector<Xyz> tilted_circle_points()
+{
+  std::vector<Xyz> p;
+  for(int u = -5; u <= 5; ++u)
+    for(int v = -5; v <= 5; ++v)
+      if(u * u + v * v == 25) p.push_back({double(u + 2 * v), double(2 * u + v), double(2 * u - 2 * v)});
+  return p;
+}
+
 inline std::vector<std::string> distribution_names()
 {
   return {"uniform", "gauss", "clusters", "sphere", "grid"};

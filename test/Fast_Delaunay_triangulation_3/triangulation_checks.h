@@ -1,6 +1,7 @@
 // Independent checks of a triangulation, used by several tests: the finite
-// cells as sorted point 4-tuples (comparable with CGAL's), exact orientation,
-// adjacency symmetry, local Delaunay property, volume = convex hull volume.
+// vertices, facets, edges, cells and hull as sorted point tuples (comparable
+// with CGAL's), exact orientation, adjacency symmetry, local Delaunay
+// property, volume = convex hull volume.
 #ifndef CGAL_FDT3_TEST_TRIANGULATION_CHECKS_H
 #define CGAL_FDT3_TEST_TRIANGULATION_CHECKS_H
 
@@ -33,6 +34,102 @@ typedef CGAL::Delaunay_triangulation_3<K> Cgal_dt;
 // numbering, so cells of two triangulations can be compared.
 typedef std::array<std::tuple<double, double, double>, 4> Cell_key;
 
+// CGAL's perturbed predicates (side_of_oriented_sphere and
+// coplanar_side_of_bounded_circle with perturb = true) are protected members
+// of Delaunay_triangulation_3: reach them from a derived class.
+struct Cgal_perturbed_predicates : Cgal_dt
+{
+  using Cgal_dt::coplanar_side_of_bounded_circle;
+  using Cgal_dt::side_of_oriented_sphere;
+};
+
+// A point as a tuple, so that simplices of two triangulations can be
+// compared as sorted point tuples, independently of vertex numbering.
+typedef std::tuple<double, double, double> Point_key;
+typedef std::array<Point_key, 3> Facet_key;
+typedef std::array<Point_key, 2> Edge_key;
+
+inline Point_key point_key(const Point& p) { return Point_key(p.x(), p.y(), p.z()); }
+
+// The distinct points of an input, sorted: what the finite vertices must be.
+inline std::vector<Point_key> distinct_point_keys(const std::vector<Point>& points)
+{
+  std::vector<Point_key> keys;
+  for(const Point& p : points) keys.push_back(point_key(p));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
+}
+
+template <class Tr>
+std::vector<Point_key> finite_vertex_keys(const Tr& tr)
+{
+  std::vector<Point_key> keys;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    keys.push_back(point_key(v->point()));
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+template <class Tr>
+std::vector<Facet_key> finite_facet_keys(const Tr& tr)
+{
+  std::vector<Facet_key> keys;
+  for(auto f = tr.finite_facets_begin(); f != tr.finite_facets_end(); ++f) {
+    Facet_key k;
+    for(int i = 0, j = 0; i < 4; ++i)
+      if(i != f->second) k[j++] = point_key(f->first->vertex(i)->point());
+    std::sort(k.begin(), k.end());
+    keys.push_back(k);
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+template <class Tr>
+std::vector<Edge_key> finite_edge_keys(const Tr& tr)
+{
+  std::vector<Edge_key> keys;
+  for(auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
+    Edge_key k = {point_key(e->first->vertex(e->second)->point()),
+                  point_key(e->first->vertex(e->third)->point())};
+    std::sort(k.begin(), k.end());
+    keys.push_back(k);
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+// The convex hull as seen from the infinite vertex: the finite facets of the
+// infinite cells, and their vertices.
+template <class Tr>
+std::vector<Facet_key> hull_facet_keys(const Tr& tr)
+{
+  std::vector<Facet_key> keys;
+  for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c) {
+    const typename Tr::Cell_handle ch = c;
+    if(!tr.is_infinite(ch)) continue;
+    const int inf = ch->index(tr.infinite_vertex());
+    Facet_key k;
+    for(int i = 0, j = 0; i < 4; ++i)
+      if(i != inf) k[j++] = point_key(ch->vertex(i)->point());
+    std::sort(k.begin(), k.end());
+    keys.push_back(k);
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+template <class Tr>
+std::vector<Point_key> hull_vertex_keys(const Tr& tr)
+{
+  std::vector<Point_key> keys;
+  for(const Facet_key& f : hull_facet_keys(tr)) keys.insert(keys.end(), f.begin(), f.end());
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
+}
+
 template <class Tr>
 std::vector<Cell_key> finite_cell_keys(const Tr& tr)
 {
@@ -57,8 +154,7 @@ template <class Tr>
 void expect_locally_delaunay(const Tr& tr)
 {
   const K k;
-  // CGAL's perturbed in-sphere test on points is protected: reach it from a derived class.
-  struct Oracle : Cgal_dt { using Cgal_dt::side_of_oriented_sphere; } oracle;
+  const Cgal_perturbed_predicates oracle{};
   std::size_t checked = 0;
   for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
     const Point p0 = c->vertex(0)->point(), p1 = c->vertex(1)->point(), p2 = c->vertex(2)->point(),
@@ -68,8 +164,11 @@ void expect_locally_delaunay(const Tr& tr)
       auto n = c->neighbor(i);
       const int j = tr.mirror_index(typename Tr::Cell_handle(c), i);
       ASSERT_EQ(n->neighbor(j), typename Tr::Cell_handle(c)) << "adjacency not symmetric";
-      for(int l = 0; l < 4; ++l)
-        if(l != i) ASSERT_TRUE(n->has_vertex(c->vertex(l)));
+      for(int l = 0; l < 4; ++l) {
+        if(l != i) {
+          ASSERT_TRUE(n->has_vertex(c->vertex(l)));
+        }
+      }
       if(tr.is_infinite(n->vertex(j))) continue;
       const Point q = n->vertex(j)->point();
       ASSERT_NE(oracle.side_of_oriented_sphere(p0, p1, p2, p3, q, true), CGAL::ON_POSITIVE_SIDE)
@@ -108,6 +207,22 @@ void expect_volume_of_hull(const Tr& tr, const std::vector<Point>& points)
     }
   }
   EXPECT_TRUE(volume == hull_volume) << CGAL::to_double(volume) << " vs " << CGAL::to_double(hull_volume);
+}
+
+// `tr` is the triangulation CGAL builds from the same points: same dimension
+// and vertices, and in dimension 3 the same cells, checked independently.
+template <class Tr>
+void expect_same_as_cgal(const Tr& tr, const Cgal_dt& cgal)
+{
+  EXPECT_TRUE(tr.is_valid());
+  ASSERT_EQ(tr.dimension(), cgal.dimension());
+  ASSERT_EQ(tr.number_of_vertices(), cgal.number_of_vertices());
+  EXPECT_TRUE(finite_vertex_keys(tr) == finite_vertex_keys(cgal)) << "different vertices";
+  if(cgal.dimension() < 3) return;
+  EXPECT_EQ(tr.number_of_cells(), cgal.number_of_cells());
+  EXPECT_EQ(tr.number_of_finite_cells(), cgal.number_of_finite_cells());
+  EXPECT_TRUE(finite_cell_keys(tr) == finite_cell_keys(cgal)) << "different cells";
+  expect_locally_delaunay(tr);
 }
 
 } // namespace fdt3_test

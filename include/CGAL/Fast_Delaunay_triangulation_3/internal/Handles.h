@@ -230,4 +230,17 @@ private:
 } // namespace Fast_Delaunay_triangulation_3_internal
 } // namespace CGAL
 
+// CGAL's handles hash with std::hash as well as boost::hash (hash_value):
+// code that keys a std::unordered_map by handle must compile unchanged.
+namespace std {
+template <class Facade, class Index>
+struct hash<CGAL::Fast_Delaunay_triangulation_3_internal::Flat_handle<Facade, Index>>
+{
+  std::size_t operator()(const CGAL::Fast_Delaunay_triangulation_3_internal::Flat_handle<Facade, Index>& h) const
+  {
+    return hash_value(h);
+  }
+};
+} // namespace std
+
 #endif // CGAL_FDT3_INTERNAL_HANDLES_H

@@ -1,0 +1,711 @@
+// The CGAL interface, one test body for two triangulations (CGAL's
+// _test_cls_delaunay_3 pattern): every typed test runs on
+// CGAL::Delaunay_triangulation_3, which proves its assertions can hold, and
+// on CGAL::Fast_Delaunay_triangulation_3, which proves the drop-in.  The
+// assertions relate counts, iterators, ranges and handle navigation to each
+// other and to independent facts (Euler's relation, distinct input points).
+// The tests at the end compare the two triangulations of the same points.
+//
+// Only dimension 3 is exercised here, except for the empty triangulation and
+// insertion: below dimension 3 this package stores no cells (documented), so
+// facets, edges and v->cell() differ from CGAL's there.
+#include "triangulation_checks.h"
+
+#include <CGAL/Fast_Delaunay_triangulation_3.h>
+
+#include <boost/functional/hash.hpp>
+
+#include <algorithm>
+#include <array>
+#include <iterator>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+using namespace fdt3_test;
+typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
+
+namespace {
+
+struct Named_points
+{
+  std::string name;
+  std::vector<Point> points;
+};
+
+// Small inputs in general and in degenerate position (the grid is exactly
+// cospherical and coplanar in many places; duplicates are stored once).
+std::vector<Named_points> inputs()
+{
+  std::vector<Named_points> all;
+  for(const char* d : {"uniform", "grid", "sphere", "duplicates"})
+    all.push_back({d, to_points<Point>(make_points(d, 150, 11))});
+  return all;
+}
+
+template <class Tr>
+class Concept : public ::testing::Test
+{
+};
+
+struct Triangulation_names
+{
+  template <class Tr>
+  static std::string GetName(int)
+  {
+    return std::is_same<Tr, Cgal_dt>::value ? "Cgal" : "Fast";
+  }
+};
+
+typedef ::testing::Types<Cgal_dt, Fast_dt> Triangulations;
+TYPED_TEST_SUITE(Concept, Triangulations, Triangulation_names);
+
+template <class Iterator>
+std::size_t count(Iterator first, Iterator last)
+{
+  return static_cast<std::size_t>(std::distance(first, last));
+}
+
+// The vertices of a facet or an edge, sorted by handle order: the same for
+// every (cell, index) representation of it.
+template <class Tr>
+std::array<typename Tr::Vertex_handle, 3> facet_vertices(const typename Tr::Facet& f)
+{
+  std::array<typename Tr::Vertex_handle, 3> v;
+  for(int i = 0, j = 0; i < 4; ++i)
+    if(i != f.second) v[j++] = f.first->vertex(i);
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+template <class Tr>
+std::pair<typename Tr::Vertex_handle, typename Tr::Vertex_handle>
+edge_vertices(typename Tr::Cell_handle c, int i, int j)
+{
+  return std::minmax(c->vertex(i), c->vertex(j));
+}
+
+TYPED_TEST(Concept, EmptyTriangulation)
+{
+  TypeParam tr;
+  EXPECT_EQ(tr.dimension(), -1);
+  EXPECT_EQ(tr.number_of_vertices(), 0u);
+  EXPECT_EQ(tr.number_of_cells(), 0u);
+  EXPECT_EQ(tr.number_of_finite_cells(), 0u);
+  EXPECT_EQ(tr.number_of_finite_facets(), 0u);
+  EXPECT_EQ(tr.number_of_finite_edges(), 0u);
+  EXPECT_TRUE(tr.is_valid());
+  EXPECT_EQ(count(tr.finite_vertices_begin(), tr.finite_vertices_end()), 0u);
+  EXPECT_EQ(count(tr.finite_cells_begin(), tr.finite_cells_end()), 0u);
+  EXPECT_EQ(count(tr.finite_facets_begin(), tr.finite_facets_end()), 0u);
+  EXPECT_EQ(count(tr.finite_edges_begin(), tr.finite_edges_end()), 0u);
+  // Even the empty triangulation has its infinite vertex.
+  ASSERT_EQ(count(tr.all_vertices_begin(), tr.all_vertices_end()), 1u);
+  EXPECT_TRUE(typename TypeParam::Vertex_handle(tr.all_vertices_begin()) == tr.infinite_vertex());
+  EXPECT_TRUE(tr.is_infinite(tr.infinite_vertex()));
+}
+
+TYPED_TEST(Concept, CountsEqualIteration)
+{
+  for(const Named_points& input : inputs()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    ASSERT_EQ(tr.dimension(), 3);
+    const std::size_t v = count(tr.finite_vertices_begin(), tr.finite_vertices_end());
+    const std::size_t e = count(tr.finite_edges_begin(), tr.finite_edges_end());
+    const std::size_t f = count(tr.finite_facets_begin(), tr.finite_facets_end());
+    const std::size_t c = count(tr.finite_cells_begin(), tr.finite_cells_end());
+    const std::size_t all_v = count(tr.all_vertices_begin(), tr.all_vertices_end());
+    const std::size_t all_e = count(tr.all_edges_begin(), tr.all_edges_end());
+    const std::size_t all_f = count(tr.all_facets_begin(), tr.all_facets_end());
+    const std::size_t all_c = count(tr.all_cells_begin(), tr.all_cells_end());
+    EXPECT_EQ(v, tr.number_of_vertices());
+    EXPECT_EQ(e, tr.number_of_finite_edges());
+    EXPECT_EQ(f, tr.number_of_finite_facets());
+    EXPECT_EQ(c, tr.number_of_finite_cells());
+    EXPECT_EQ(all_v, tr.number_of_vertices() + 1);
+    EXPECT_EQ(all_e, tr.number_of_edges());
+    EXPECT_EQ(all_f, tr.number_of_facets());
+    EXPECT_EQ(all_c, tr.number_of_cells());
+    EXPECT_EQ(count(tr.vertices_begin(), tr.vertices_end()), all_v);
+    EXPECT_EQ(count(tr.edges_begin(), tr.edges_end()), all_e);
+    EXPECT_EQ(count(tr.facets_begin(), tr.facets_end()), all_f);
+    EXPECT_EQ(count(tr.cells_begin(), tr.cells_end()), all_c);
+    EXPECT_EQ(v, distinct_point_keys(input.points).size());
+
+    // Independent relations: the finite cells triangulate a ball (Euler
+    // characteristic 1); with the infinite vertex they triangulate a
+    // 3-sphere (characteristic 0); every facet has two cells.
+    EXPECT_EQ(v + f, e + c + 1);
+    EXPECT_EQ(all_v + all_f, all_e + all_c);
+    EXPECT_EQ(2 * all_f, 4 * all_c);
+    // Hull facets: one per infinite cell, and seen from one finite cell.
+    EXPECT_EQ(all_c - c, 2 * f - 4 * c);
+  }
+}
+
+TYPED_TEST(Concept, AllVerticesHoldTheInfiniteVertexOnce)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  for(const Named_points& input : inputs()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    std::set<Vertex_handle> finite, all;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+      EXPECT_FALSE(tr.is_infinite(Vertex_handle(v)));
+      finite.insert(v);
+    }
+    std::size_t infinite = 0;
+    for(auto v = tr.all_vertices_begin(); v != tr.all_vertices_end(); ++v) {
+      const Vertex_handle h = v;
+      if(tr.is_infinite(h)) {
+        ++infinite;
+        EXPECT_TRUE(h == tr.infinite_vertex());
+      } else {
+        EXPECT_EQ(finite.count(h), 1u);
+      }
+      all.insert(h);
+    }
+    EXPECT_EQ(infinite, 1u);
+    EXPECT_EQ(all.size(), finite.size() + 1);
+    EXPECT_EQ(finite.count(tr.infinite_vertex()), 0u);
+  }
+}
+
+TYPED_TEST(Concept, EachFacetEnumeratedOnce)
+{
+  typedef typename TypeParam::Facet Facet;
+  for(const Named_points& input : inputs()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    std::set<std::array<typename TypeParam::Vertex_handle, 3>> all, finite;
+    for(auto f = tr.all_facets_begin(); f != tr.all_facets_end(); ++f) {
+      EXPECT_TRUE(all.insert(facet_vertices<TypeParam>(*f)).second) << "facet enumerated twice";
+      if(!tr.is_infinite(*f)) finite.insert(facet_vertices<TypeParam>(*f));
+    }
+    std::set<std::array<typename TypeParam::Vertex_handle, 3>> iterated_finite;
+    for(auto f = tr.finite_facets_begin(); f != tr.finite_facets_end(); ++f) {
+      EXPECT_FALSE(tr.is_infinite(*f));
+      EXPECT_TRUE(iterated_finite.insert(facet_vertices<TypeParam>(*f)).second) << "facet enumerated twice";
+    }
+    EXPECT_TRUE(iterated_finite == finite);
+    // Every facet of every cell is there.
+    for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        EXPECT_EQ(all.count(facet_vertices<TypeParam>(Facet(c, i))), 1u);
+    EXPECT_EQ(all.size(), tr.number_of_facets());
+    EXPECT_EQ(finite.size(), tr.number_of_finite_facets());
+  }
+}
+
+TYPED_TEST(Concept, EachEdgeEnumeratedOnce)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  for(const Named_points& input : inputs()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    std::set<std::pair<Vertex_handle, Vertex_handle>> all, finite;
+    for(auto e = tr.all_edges_begin(); e != tr.all_edges_end(); ++e) {
+      EXPECT_TRUE(all.insert(edge_vertices<TypeParam>(e->first, e->second, e->third)).second)
+          << "edge enumerated twice";
+      if(!tr.is_infinite(*e)) finite.insert(edge_vertices<TypeParam>(e->first, e->second, e->third));
+    }
+    std::set<std::pair<Vertex_handle, Vertex_handle>> iterated_finite;
+    for(auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
+      EXPECT_FALSE(tr.is_infinite(*e));
+      EXPECT_TRUE(iterated_finite.insert(edge_vertices<TypeParam>(e->first, e->second, e->third)).second)
+          << "edge enumerated twice";
+    }
+    EXPECT_TRUE(iterated_finite == finite);
+    for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j) EXPECT_EQ(all.count(edge_vertices<TypeParam>(c, i, j)), 1u);
+    EXPECT_EQ(all.size(), tr.number_of_edges());
+    EXPECT_EQ(finite.size(), tr.number_of_finite_edges());
+  }
+}
+
+TYPED_TEST(Concept, NeighboursAndMirrorsAreConsistent)
+{
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  typedef typename TypeParam::Facet Facet;
+  for(const Named_points& input : inputs()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    for(Cell_handle c : tr.all_cell_handles()) {
+      for(int i = 0; i < 4; ++i) {
+        const Cell_handle n = c->neighbor(i);
+        const int j = tr.mirror_index(c, i);
+        ASSERT_TRUE(n->neighbor(j) == c);
+        EXPECT_EQ(n->index(c), j);
+        EXPECT_EQ(c->index(n), i);
+        EXPECT_TRUE(c->has_neighbor(n));
+        EXPECT_TRUE(tr.mirror_vertex(c, i) == n->vertex(j));
+        EXPECT_FALSE(c->has_vertex(n->vertex(j)));
+        for(int k = 0; k < 4; ++k) {
+          if(k != i) {
+            EXPECT_TRUE(n->has_vertex(c->vertex(k)));
+          }
+        }
+
+        const Facet f(c, i);
+        const Facet m = tr.mirror_facet(f);
+        EXPECT_TRUE(m.first == n);
+        EXPECT_EQ(m.second, j);
+        EXPECT_TRUE(tr.mirror_facet(m) == f);
+        EXPECT_TRUE(facet_vertices<TypeParam>(m) == facet_vertices<TypeParam>(f));
+
+        EXPECT_EQ(c->index(c->vertex(i)), i);
+        int k = -1;
+        EXPECT_TRUE(c->has_vertex(c->vertex(i), k));
+        EXPECT_EQ(k, i);
+      }
+    }
+  }
+}
+
+TYPED_TEST(Concept, VerticesKnowAnIncidentCell)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  for(const Named_points& input : inputs()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    for(Vertex_handle v : tr.all_vertex_handles()) {
+      const Cell_handle c = v->cell();
+      ASSERT_TRUE(c->has_vertex(v));
+      EXPECT_TRUE(c->vertex(c->index(v)) == v);
+    }
+    std::map<Vertex_handle, std::size_t> incident;
+    for(Cell_handle c : tr.all_cell_handles())
+      for(int i = 0; i < 4; ++i) {
+        EXPECT_TRUE(c->vertex(i)->cell()->has_vertex(c->vertex(i)));
+        ++incident[c->vertex(i)];
+      }
+    EXPECT_EQ(incident.size(), tr.number_of_vertices() + 1);
+    // Every vertex is in at least 4 cells.
+    for(const auto& vi : incident) EXPECT_GE(vi.second, 4u);
+    EXPECT_TRUE(tr.is_infinite(tr.infinite_cell()));
+    EXPECT_TRUE(tr.infinite_cell()->has_vertex(tr.infinite_vertex()));
+  }
+}
+
+TYPED_TEST(Concept, IsInfiniteOverloadsAgree)
+{
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  typedef typename TypeParam::Facet Facet;
+  typedef typename TypeParam::Edge Edge;
+  const std::vector<Point> points = to_points<Point>(make_points("grid", 64, 3));
+  const TypeParam tr(points.begin(), points.end());
+  const auto inf = tr.infinite_vertex();
+  std::size_t infinite_cells = 0;
+  for(Cell_handle c : tr.all_cell_handles()) {
+    EXPECT_EQ(tr.is_infinite(c), c->has_vertex(inf));
+    infinite_cells += tr.is_infinite(c) ? 1 : 0;
+    for(int i = 0; i < 4; ++i) {
+      const bool facet_infinite = c->has_vertex(inf) && c->vertex(i) != inf;
+      EXPECT_EQ(tr.is_infinite(c, i), facet_infinite);
+      EXPECT_EQ(tr.is_infinite(Facet(c, i)), facet_infinite);
+      for(int j = i + 1; j < 4; ++j) {
+        const bool edge_infinite = c->vertex(i) == inf || c->vertex(j) == inf;
+        EXPECT_EQ(tr.is_infinite(c, i, j), edge_infinite);
+        EXPECT_EQ(tr.is_infinite(Edge(c, i, j)), edge_infinite);
+      }
+    }
+  }
+  EXPECT_EQ(infinite_cells, tr.number_of_cells() - tr.number_of_finite_cells());
+  for(Cell_handle c : tr.finite_cell_handles()) EXPECT_FALSE(tr.is_infinite(c));
+}
+
+// Handles in iteration order, from an iterator pair (through the iterator's
+// conversion to a handle) or from a range of handles.
+template <class Handle, class Iterator>
+std::vector<Handle> handles_in(Iterator first, Iterator last)
+{
+  std::vector<Handle> out;
+  for(; first != last; ++first) out.push_back(Handle(first));
+  return out;
+}
+
+template <class Handle, class Range>
+std::vector<Handle> handles_in(const Range& range)
+{
+  std::vector<Handle> out;
+  for(Handle h : range) out.push_back(h);
+  return out;
+}
+
+template <class Iterator>
+std::vector<std::tuple<typename Iterator::value_type::first_type, int, int>> edges_in(Iterator first,
+                                                                                   Iterator last)
+{
+  std::vector<std::tuple<typename Iterator::value_type::first_type, int, int>> out;
+  for(; first != last; ++first) out.emplace_back(first->first, first->second, first->third);
+  return out;
+}
+
+template <class Iterator>
+std::vector<typename Iterator::value_type> facets_in(Iterator first, Iterator last)
+{
+  return std::vector<typename Iterator::value_type>(first, last);
+}
+
+TYPED_TEST(Concept, RangesEqualIterators)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  const std::vector<Point> points = to_points<Point>(make_points("uniform", 100, 5));
+  const TypeParam tr(points.begin(), points.end());
+
+  const std::vector<Cell_handle> finite_cells =
+      handles_in<Cell_handle>(tr.finite_cells_begin(), tr.finite_cells_end());
+  ASSERT_EQ(finite_cells.size(), tr.number_of_finite_cells());
+  EXPECT_TRUE(handles_in<Cell_handle>(tr.finite_cell_handles()) == finite_cells);
+  EXPECT_TRUE(handles_in<Cell_handle>(tr.all_cell_handles()) ==
+              handles_in<Cell_handle>(tr.all_cells_begin(), tr.all_cells_end()));
+  EXPECT_TRUE(handles_in<Vertex_handle>(tr.finite_vertex_handles()) ==
+              handles_in<Vertex_handle>(tr.finite_vertices_begin(), tr.finite_vertices_end()));
+  EXPECT_TRUE(handles_in<Vertex_handle>(tr.all_vertex_handles()) ==
+              handles_in<Vertex_handle>(tr.all_vertices_begin(), tr.all_vertices_end()));
+  EXPECT_TRUE(facets_in(tr.finite_facets().begin(), tr.finite_facets().end()) ==
+              facets_in(tr.finite_facets_begin(), tr.finite_facets_end()));
+  EXPECT_TRUE(facets_in(tr.all_facets().begin(), tr.all_facets().end()) ==
+              facets_in(tr.all_facets_begin(), tr.all_facets_end()));
+  EXPECT_TRUE(edges_in(tr.finite_edges().begin(), tr.finite_edges().end()) ==
+              edges_in(tr.finite_edges_begin(), tr.finite_edges_end()));
+  EXPECT_TRUE(edges_in(tr.all_edges().begin(), tr.all_edges().end()) ==
+              edges_in(tr.all_edges_begin(), tr.all_edges_end()));
+
+  // Dereferencing an iterator and going through its handle reach the same element.
+  auto c = tr.finite_cells_begin();
+  EXPECT_TRUE(c->vertex(0) == Cell_handle(c)->vertex(0));
+  EXPECT_TRUE((*c).neighbor(1) == Cell_handle(c)->neighbor(1));
+  auto v = tr.finite_vertices_begin();
+  EXPECT_TRUE(v->point() == Vertex_handle(v)->point());
+}
+
+TYPED_TEST(Concept, HandlesWorkAsKeys)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  const std::vector<Point> points = to_points<Point>(make_points("gauss", 120, 9));
+  const TypeParam tr(points.begin(), points.end());
+
+  std::set<Vertex_handle> vertex_set;
+  std::map<Cell_handle, std::size_t> cell_number;
+  std::unordered_map<Vertex_handle, Point> point_of;                      // std::hash
+  std::unordered_set<Cell_handle, boost::hash<Cell_handle>> cell_hash_set; // boost::hash
+  for(Vertex_handle v : tr.all_vertex_handles()) {
+    vertex_set.insert(v);
+    if(!tr.is_infinite(v)) point_of[v] = v->point();
+  }
+  for(Cell_handle c : tr.all_cell_handles()) {
+    cell_number.emplace(c, cell_number.size());
+    cell_hash_set.insert(c);
+  }
+  EXPECT_EQ(vertex_set.size(), tr.number_of_vertices() + 1);
+  EXPECT_EQ(point_of.size(), tr.number_of_vertices());
+  EXPECT_EQ(cell_number.size(), tr.number_of_cells());
+  EXPECT_EQ(cell_hash_set.size(), tr.number_of_cells());
+
+  // Handles reached by navigation find the keys stored from iteration, and
+  // equal handles hash equally.
+  const std::hash<Vertex_handle> std_hash;
+  const boost::hash<Cell_handle> boost_hash;
+  for(Cell_handle c : tr.all_cell_handles()) {
+    for(int i = 0; i < 4; ++i) {
+      const Vertex_handle v = c->vertex(i);
+      EXPECT_EQ(vertex_set.count(v), 1u);
+      if(!tr.is_infinite(v)) {
+        ASSERT_EQ(point_of.count(v), 1u);
+        EXPECT_TRUE(point_of[v] == v->point());
+        EXPECT_EQ(std_hash(v), std_hash(*vertex_set.find(v)));
+      }
+      const Cell_handle n = c->neighbor(i);
+      EXPECT_EQ(cell_number.count(n), 1u);
+      EXPECT_EQ(cell_hash_set.count(n), 1u);
+      EXPECT_EQ(boost_hash(n), boost_hash(cell_number.find(n)->first));
+    }
+  }
+  // Distinct handles are distinct keys.
+  std::set<Point_key> distinct_points;
+  for(const auto& vp : point_of) distinct_points.insert(point_key(vp.second));
+  EXPECT_EQ(distinct_points.size(), point_of.size());
+}
+
+TYPED_TEST(Concept, CopyIsEqualAndIndependent)
+{
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  const std::vector<Point> points = to_points<Point>(make_points("uniform", 200, 21));
+  const std::vector<Point> more = to_points<Point>(make_points("uniform", 50, 22));
+  std::vector<Point> union_of_both = points;
+  union_of_both.insert(union_of_both.end(), more.begin(), more.end());
+  const Cgal_dt reference(union_of_both.begin(), union_of_both.end());
+
+  TypeParam original(points.begin(), points.end());
+  const std::vector<Cell_key> before = finite_cell_keys(original);
+
+  TypeParam copy(original);
+  TypeParam assigned(more.begin(), more.end());
+  assigned = original;
+  for(TypeParam* t : {&copy, &assigned}) {
+    EXPECT_TRUE(t->is_valid());
+    EXPECT_EQ(t->number_of_vertices(), original.number_of_vertices());
+    EXPECT_EQ(t->number_of_cells(), original.number_of_cells());
+    EXPECT_TRUE(finite_cell_keys(*t) == before);
+    EXPECT_TRUE(t->infinite_vertex() != original.infinite_vertex());
+    // Navigation in the copy stays in the copy.
+    std::set<Cell_handle> own(t->all_cell_handles().begin(), t->all_cell_handles().end());
+    std::set<Cell_handle> others(original.all_cell_handles().begin(), original.all_cell_handles().end());
+    for(Cell_handle c : t->all_cell_handles())
+      for(int i = 0; i < 4; ++i) {
+        EXPECT_EQ(own.count(c->neighbor(i)), 1u);
+        EXPECT_EQ(others.count(c->neighbor(i)), 0u);
+      }
+    EXPECT_EQ(t->is_infinite(t->infinite_cell()), true);
+
+    t->insert(more.begin(), more.end());
+    expect_same_as_cgal(*t, reference);
+    EXPECT_TRUE(finite_cell_keys(original) == before) << "the original changed with its copy";
+    EXPECT_TRUE(original.is_valid());
+  }
+}
+
+TYPED_TEST(Concept, MoveTransfersTheTriangulation)
+{
+  const std::vector<Point> points = to_points<Point>(make_points("grid", 125, 23));
+  const Cgal_dt reference(points.begin(), points.end());
+
+  TypeParam source(points.begin(), points.end());
+  TypeParam moved(std::move(source));
+  expect_same_as_cgal(moved, reference);
+  // CGAL 5.5 leaves a moved-from triangulation unusable until clear();
+  // after clear() both must be empty, valid and reusable.
+  source.clear();
+  EXPECT_EQ(source.number_of_vertices(), 0u);
+  EXPECT_EQ(source.dimension(), -1);
+  EXPECT_TRUE(source.is_valid());
+  source.insert(points.begin(), points.end());
+  expect_same_as_cgal(source, reference);
+
+  const std::vector<Point> other_points = to_points<Point>(make_points("uniform", 30, 24));
+  TypeParam target(other_points.begin(), other_points.end());
+  target = std::move(moved);
+  expect_same_as_cgal(target, reference);
+  moved.clear();
+  EXPECT_EQ(moved.number_of_vertices(), 0u);
+  EXPECT_TRUE(moved.is_valid());
+}
+
+TYPED_TEST(Concept, SwapExchangesTriangulations)
+{
+  const std::vector<Point> a_points = to_points<Point>(make_points("uniform", 80, 25));
+  const std::vector<Point> b_points = to_points<Point>(make_points("sphere", 60, 26));
+  const Cgal_dt a_reference(a_points.begin(), a_points.end());
+  const Cgal_dt b_reference(b_points.begin(), b_points.end());
+  TypeParam a(a_points.begin(), a_points.end());
+  TypeParam b(b_points.begin(), b_points.end());
+  a.swap(b);
+  expect_same_as_cgal(a, b_reference);
+  expect_same_as_cgal(b, a_reference);
+  using std::swap;
+  swap(a, b);
+  expect_same_as_cgal(a, a_reference);
+  expect_same_as_cgal(b, b_reference);
+  TypeParam empty;
+  a.swap(empty);
+  EXPECT_EQ(a.number_of_vertices(), 0u);
+  EXPECT_TRUE(a.is_valid());
+  expect_same_as_cgal(empty, a_reference);
+}
+
+TYPED_TEST(Concept, ClearEmptiesAndAllowsReuse)
+{
+  const std::vector<Point> points = to_points<Point>(make_points("clusters", 100, 27));
+  const Cgal_dt reference(points.begin(), points.end());
+  TypeParam tr(points.begin(), points.end());
+  tr.clear();
+  EXPECT_EQ(tr.dimension(), -1);
+  EXPECT_EQ(tr.number_of_vertices(), 0u);
+  EXPECT_EQ(tr.number_of_cells(), 0u);
+  EXPECT_EQ(tr.number_of_finite_edges(), 0u);
+  EXPECT_TRUE(tr.finite_cells_begin() == tr.finite_cells_end());
+  EXPECT_TRUE(tr.finite_vertices_begin() == tr.finite_vertices_end());
+  EXPECT_EQ(count(tr.all_vertices_begin(), tr.all_vertices_end()), 1u);
+  EXPECT_TRUE(tr.is_valid());
+  EXPECT_EQ(tr.insert(points.begin(), points.end()), std::ptrdiff_t(reference.number_of_vertices()));
+  expect_same_as_cgal(tr, reference);
+}
+
+TYPED_TEST(Concept, RangeInsertReturnsTheNumberOfNewVertices)
+{
+  // Duplicates inside each batch and across batches; the batches go through
+  // dimensions 0, 1, 2 and 3.
+  const std::vector<Point> batches[] = {
+      {Point(1, 1, 1), Point(1, 1, 1)},
+      {Point(2, 2, 2), Point(1, 1, 1), Point(3, 3, 3), Point(2, 2, 2)},
+      {Point(0, 1, 0), Point(0, 1, 0), Point(3, 3, 3)},
+      {Point(0, 0, 5), Point(2, 2, 2), Point(0, 0, 5)},
+      to_points<Point>(make_points("duplicates", 100, 28)),
+      to_points<Point>(make_points("duplicates", 100, 28)),
+      {},
+  };
+  const int expected_dimension[] = {0, 1, 2, 3, 3, 3, 3};
+  TypeParam tr;
+  std::vector<Point> so_far;
+  for(std::size_t b = 0; b < std::size(batches); ++b) {
+    SCOPED_TRACE("batch " + std::to_string(b));
+    const std::size_t distinct_before = distinct_point_keys(so_far).size();
+    so_far.insert(so_far.end(), batches[b].begin(), batches[b].end());
+    const std::size_t distinct_after = distinct_point_keys(so_far).size();
+    EXPECT_EQ(tr.insert(batches[b].begin(), batches[b].end()),
+              std::ptrdiff_t(distinct_after - distinct_before));
+    EXPECT_EQ(tr.number_of_vertices(), distinct_after);
+    EXPECT_EQ(tr.dimension(), expected_dimension[b]);
+    EXPECT_TRUE(finite_vertex_keys(tr) == distinct_point_keys(so_far));
+  }
+  const Cgal_dt reference(so_far.begin(), so_far.end());
+  expect_same_as_cgal(tr, reference);
+}
+
+TYPED_TEST(Concept, PointInsertReturnsItsVertex)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  auto vertex_at = [](const TypeParam& tr, const Point& p) {
+    Vertex_handle found;
+    std::size_t matches = 0;
+    for(Vertex_handle v : tr.finite_vertex_handles())
+      if(v->point() == p) { found = v; ++matches; }
+    EXPECT_EQ(matches, 1u);
+    return found;
+  };
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0),
+                                     Point(0, 0, 1), Point(1, 1, 1), Point(0.5, 0.25, 0.125)};
+  TypeParam tr;
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    SCOPED_TRACE("point " + std::to_string(i));
+    const Vertex_handle v = tr.insert(points[i]);
+    EXPECT_EQ(tr.number_of_vertices(), i + 1);
+    EXPECT_TRUE(v->point() == points[i]);
+    EXPECT_FALSE(tr.is_infinite(v));
+    EXPECT_TRUE(v == vertex_at(tr, points[i]));
+    // Inserting it again, or any earlier point, returns the existing vertex
+    // in every dimension.
+    for(std::size_t j = 0; j <= i; ++j) {
+      const Vertex_handle w = vertex_at(tr, points[j]);
+      EXPECT_TRUE(tr.insert(points[j]) == w);
+      EXPECT_EQ(tr.number_of_vertices(), i + 1);
+    }
+  }
+  ASSERT_EQ(tr.dimension(), 3);
+  EXPECT_TRUE(tr.is_valid());
+
+  const Point p(0.25, 0.25, 0.25), q(2, 2, 2);
+  const Vertex_handle vp = tr.insert(p, tr.infinite_cell());
+  EXPECT_TRUE(vp->point() == p);
+  EXPECT_TRUE(vp->cell()->has_vertex(vp));
+  const Vertex_handle vq = tr.insert(q, vp);
+  EXPECT_TRUE(vq->point() == q);
+  EXPECT_TRUE(tr.insert(p, Cell_handle(tr.finite_cells_begin())) == vp);
+  EXPECT_TRUE(tr.insert(q, vq) == vq);
+  std::vector<Point> all = points;
+  all.push_back(p);
+  all.push_back(q);
+  const Cgal_dt reference(all.begin(), all.end());
+  expect_same_as_cgal(tr, reference);
+}
+
+TYPED_TEST(Concept, PointsAndTetrahedraOfCells)
+{
+  const std::vector<Point> points = to_points<Point>(make_points("sphere", 80, 29));
+  const TypeParam tr(points.begin(), points.end());
+  const K::Orientation_3 orientation = tr.geom_traits().orientation_3_object();
+  for(auto c : tr.finite_cell_handles()) {
+    for(int i = 0; i < 4; ++i) EXPECT_TRUE(tr.point(c, i) == c->vertex(i)->point());
+    const K::Tetrahedron_3 t = tr.tetrahedron(c);
+    EXPECT_EQ(orientation(t[0], t[1], t[2], t[3]), CGAL::POSITIVE);
+  }
+  for(auto v : tr.finite_vertex_handles()) EXPECT_TRUE(tr.point(v) == v->point());
+}
+
+// Beyond CGAL 5.5, whose moved-from triangulation needs clear() first: a
+// moved-from Fast_Delaunay_triangulation_3 is empty and valid at once.
+TEST(Fast_only, MovedFromIsEmptyAndValid)
+{
+  const std::vector<Point> points = to_points<Point>(make_points("uniform", 50, 30));
+  Fast_dt source(points.begin(), points.end());
+  Fast_dt moved(std::move(source));
+  Fast_dt assigned;
+  assigned = std::move(moved);
+  for(const Fast_dt* t : {&source, &moved}) {
+    EXPECT_EQ(t->number_of_vertices(), 0u);
+    EXPECT_EQ(t->dimension(), -1);
+    EXPECT_EQ(t->number_of_cells(), 0u);
+    EXPECT_TRUE(t->finite_vertices_begin() == t->finite_vertices_end());
+    EXPECT_TRUE(t->is_valid());
+  }
+  EXPECT_EQ(assigned.number_of_vertices(), points.size());
+  EXPECT_TRUE(assigned.is_valid());
+}
+
+// Ranges of this package that CGAL 5.5 lacks (finite_cells(), all_cells(),
+// finite_vertices(), all_vertices()): the same elements as the iterators.
+TEST(Fast_only, CellAndVertexRangesEqualIterators)
+{
+  typedef Fast_dt::Cell_handle Cell_handle;
+  typedef Fast_dt::Vertex_handle Vertex_handle;
+  const std::vector<Point> points = to_points<Point>(make_points("grid", 64, 32));
+  const Fast_dt tr(points.begin(), points.end());
+  EXPECT_TRUE(handles_in<Cell_handle>(tr.finite_cells().begin(), tr.finite_cells().end()) ==
+              handles_in<Cell_handle>(tr.finite_cells_begin(), tr.finite_cells_end()));
+  EXPECT_TRUE(handles_in<Cell_handle>(tr.all_cells().begin(), tr.all_cells().end()) ==
+              handles_in<Cell_handle>(tr.all_cells_begin(), tr.all_cells_end()));
+  EXPECT_TRUE(handles_in<Vertex_handle>(tr.finite_vertices().begin(), tr.finite_vertices().end()) ==
+              handles_in<Vertex_handle>(tr.finite_vertices_begin(), tr.finite_vertices_end()));
+  EXPECT_TRUE(handles_in<Vertex_handle>(tr.all_vertices().begin(), tr.all_vertices().end()) ==
+              handles_in<Vertex_handle>(tr.all_vertices_begin(), tr.all_vertices_end()));
+  std::size_t finite = 0;
+  for(const Fast_dt::Cell& c : tr.finite_cells()) finite += c.has_vertex(tr.infinite_vertex()) ? 0 : 1;
+  EXPECT_EQ(finite, tr.number_of_finite_cells());
+}
+
+// Ours against CGAL on the same points: every count and the finite facets,
+// edges and hull as point tuples.
+class Same_as_cgal : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Same_as_cgal, CountsFacetsEdgesAndHull)
+{
+  for(std::size_t n : {std::size_t(5), std::size_t(60), std::size_t(400)}) {
+    SCOPED_TRACE(n);
+    const std::vector<Point> points = to_points<Point>(make_points(GetParam(), n, 31));
+    const Fast_dt fast(points.begin(), points.end());
+    const Cgal_dt cgal(points.begin(), points.end());
+    ASSERT_EQ(fast.dimension(), cgal.dimension());
+    EXPECT_EQ(fast.number_of_vertices(), cgal.number_of_vertices());
+    EXPECT_TRUE(finite_vertex_keys(fast) == finite_vertex_keys(cgal));
+    if(cgal.dimension() < 3) continue; // no lower-dimensional cells here (documented)
+    EXPECT_EQ(fast.number_of_cells(), cgal.number_of_cells());
+    EXPECT_EQ(fast.number_of_finite_cells(), cgal.number_of_finite_cells());
+    EXPECT_EQ(fast.number_of_facets(), cgal.number_of_facets());
+    EXPECT_EQ(fast.number_of_finite_facets(), cgal.number_of_finite_facets());
+    EXPECT_EQ(fast.number_of_edges(), cgal.number_of_edges());
+    EXPECT_EQ(fast.number_of_finite_edges(), cgal.number_of_finite_edges());
+    EXPECT_TRUE(finite_facet_keys(fast) == finite_facet_keys(cgal));
+    EXPECT_TRUE(finite_edge_keys(fast) == finite_edge_keys(cgal));
+    EXPECT_TRUE(hull_facet_keys(fast) == hull_facet_keys(cgal));
+    EXPECT_TRUE(hull_vertex_keys(fast) == hull_vertex_keys(cgal));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Distributions, Same_as_cgal,
+                         ::testing::Values("uniform", "gauss", "clusters", "sphere", "grid", "duplicates",
+                                           "offset", "tiny"));
+
+} // namespace

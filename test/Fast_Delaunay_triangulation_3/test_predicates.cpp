@@ -1,0 +1,472 @@
+// Unit tests of internal/Predicates.h against CGAL:
+//  - orientation and side_of_oriented_sphere, without and with the static
+//    (bounding box) filter stage, have the sign of Epick's exact predicates
+//    on random, nearly degenerate (1 ulp off a plane or a sphere), grid,
+//    offset and scaled inputs, scales around the filters' limits included;
+//  - the perturbed in-sphere and in-circle tests equal
+//    Delaunay_triangulation_3's side_of_oriented_sphere(..., true) and
+//    coplanar_side_of_bounded_circle(..., true) on cospherical and cocircular
+//    integer points in every permutation;
+//  - the filter constants are at least, and within 1e-4 of, the error bounds
+//    their comments derive, and the magnitude limits keep those bounds valid.
+#include "triangulation_checks.h"
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace fdt3_test;
+namespace P = CGAL::Fast_Delaunay_triangulation_3_internal;
+
+namespace {
+
+typedef std::array<double, 3> Coordinates;
+
+Point to_point(const Coordinates& c) { return Point(c[0], c[1], c[2]); }
+Coordinates to_coordinates(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+int cgal_orientation(const Coordinates& p, const Coordinates& q, const Coordinates& r, const Coordinates& s)
+{
+  return static_cast<int>(K().orientation_3_object()(to_point(p), to_point(q), to_point(r), to_point(s)));
+}
+
+int cgal_side_of_oriented_sphere(const Coordinates& p, const Coordinates& q, const Coordinates& r,
+                                 const Coordinates& s, const Coordinates& t)
+{
+  return static_cast<int>(K().side_of_oriented_sphere_3_object()(to_point(p), to_point(q), to_point(r),
+                                                                 to_point(s), to_point(t)));
+}
+
+// Moves x by k units in the last place (towards +inf for k > 0).
+double ulps(double x, int k)
+{
+  for(; k > 0; --k) x = std::nextafter(x, std::numeric_limits<double>::infinity());
+  for(; k < 0; ++k) x = std::nextafter(x, -std::numeric_limits<double>::infinity());
+  return x;
+}
+
+class Generator
+{
+public:
+  explicit Generator(std::uint64_t seed) : rng_(seed) {}
+
+  double uniform(double lo = 0, double hi = 1) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+
+  Coordinates point(double scale, double offset)
+  {
+    return {offset + scale * uniform(), offset + scale * uniform(), offset + scale * uniform()};
+  }
+
+  // p moved off by -2..2 ulps in one random coordinate.
+  Coordinates nudged(Coordinates p)
+  {
+    const int axis = integer(0, 2);
+    p[axis] = ulps(p[axis], integer(-2, 2));
+    return p;
+  }
+
+  // A point of the plane of a, b, c, rounded, then nudged.
+  Coordinates near_plane(const Coordinates& a, const Coordinates& b, const Coordinates& c)
+  {
+    const double u = uniform(-1, 2), v = uniform(-1, 2);
+    Coordinates d;
+    for(int i = 0; i < 3; ++i) d[i] = a[i] + u * (b[i] - a[i]) + v * (c[i] - a[i]);
+    return nudged(d);
+  }
+
+  // A point of the sphere of centre c and radius r, rounded, then nudged.
+  Coordinates near_sphere(const Coordinates& c, double r)
+  {
+    std::normal_distribution<double> g;
+    double x, y, z, n;
+    do { x = g(rng_); y = g(rng_); z = g(rng_); n = std::sqrt(x * x + y * y + z * z); } while(n < 1e-3);
+    return nudged({c[0] + r * x / n, c[1] + r * y / n, c[2] + r * z / n});
+  }
+
+  template <class T>
+  void shuffle(std::vector<T>& v)
+  {
+    std::shuffle(v.begin(), v.end(), rng_);
+  }
+
+private:
+  std::mt19937_64 rng_;
+};
+
+// The static filter of the smallest box around the points: the tightest, so
+// the most aggressive, that the kernel could build for them.
+template <std::size_t N>
+P::Static_filter tight_static_filter(const std::array<Coordinates, N>& points)
+{
+  double lo[3], hi[3];
+  for(int a = 0; a < 3; ++a) {
+    lo[a] = hi[a] = points[0][a];
+    for(const Coordinates& p : points) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  }
+  return P::Static_filter::for_box(lo, hi);
+}
+
+// Magnitudes of the coordinates (and of their differences): ordinary, far
+// beyond the filters' limits, and just inside and outside each limit.
+struct Frame
+{
+  double scale, offset;
+};
+
+std::vector<Frame> frames()
+{
+  return {{1, 0},      {1e-120, 0}, {1e120, 0},  {1e-99, 0}, {1e-96, 0}, {1e101, 0}, {1e103, 0},
+          {1e-60, 0},  {1e-57, 0},  {1e60, 0},   {1e62, 0},  {1, 1e15},  {1e-3, 1e8}, {1e-300, 0}};
+}
+
+std::string describe(const Frame& f)
+{
+  return "scale " + std::to_string(f.scale) + ", offset " + std::to_string(f.offset);
+}
+
+TEST(Orientation, SignOfCgalsExactPredicate)
+{
+  Generator g(1);
+  std::size_t zeros = 0, tested = 0;
+  for(const Frame& f : frames()) {
+    SCOPED_TRACE(describe(f));
+    for(int i = 0; i < 1500; ++i) {
+      const Coordinates a = g.point(f.scale, f.offset), b = g.point(f.scale, f.offset),
+                        c = g.point(f.scale, f.offset);
+      // Random, nearly coplanar, and exactly coplanar by construction when no rounding happens.
+      const Coordinates d = (i % 3 == 0) ? g.point(f.scale, f.offset) : g.near_plane(a, b, c);
+      const int expected = cgal_orientation(a, b, c, d);
+      ASSERT_EQ(P::orientation(a.data(), b.data(), c.data(), d.data()), expected)
+          << "case " << i;
+      const P::Static_filter filter = tight_static_filter(std::array<Coordinates, 4>{a, b, c, d});
+      ASSERT_EQ(P::orientation(filter, a.data(), b.data(), c.data(), d.data()), expected)
+          << "static filter, case " << i;
+      ASSERT_EQ(P::orientation(b.data(), a.data(), c.data(), d.data()), -expected) << "case " << i;
+      ASSERT_EQ(P::orientation(d.data(), a.data(), b.data(), c.data()), -expected) << "case " << i;
+      zeros += expected == 0 ? 1 : 0;
+      ++tested;
+    }
+  }
+  EXPECT_GT(zeros, 100u) << "too few exactly coplanar cases (of " << tested << ") to exercise the exact stage";
+}
+
+TEST(Orientation, GridPoints)
+{
+  // Small integer coordinates: zero determinants everywhere, also scaled.
+  Generator g(2);
+  for(double scale : {1.0, 1e-120, 1e120, 0.1, 1e-97, 1e102}) {
+    SCOPED_TRACE(scale);
+    for(int i = 0; i < 3000; ++i) {
+      std::array<Coordinates, 4> p;
+      for(Coordinates& q : p)
+        q = {scale * g.integer(0, 3), scale * g.integer(0, 3), scale * g.integer(0, 3)};
+      ASSERT_EQ(P::orientation(p[0].data(), p[1].data(), p[2].data(), p[3].data()),
+                cgal_orientation(p[0], p[1], p[2], p[3]));
+    }
+  }
+}
+
+TEST(Side_of_oriented_sphere, SignOfCgalsExactPredicate)
+{
+  Generator g(3);
+  for(const Frame& f : frames()) {
+    SCOPED_TRACE(describe(f));
+    for(int i = 0; i < 1500; ++i) {
+      std::array<Coordinates, 5> p;
+      if(i % 3 == 0) {
+        for(Coordinates& q : p) q = g.point(f.scale, f.offset);
+      } else {
+        const Coordinates centre = g.point(f.scale, f.offset);
+        const double radius = f.scale * g.uniform(0.1, 1);
+        for(Coordinates& q : p) q = g.near_sphere(centre, radius);
+      }
+      const int expected = cgal_side_of_oriented_sphere(p[0], p[1], p[2], p[3], p[4]);
+      ASSERT_EQ(P::side_of_oriented_sphere(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()),
+                expected)
+          << "case " << i;
+      ASSERT_EQ(P::side_of_oriented_sphere(p[1].data(), p[0].data(), p[2].data(), p[3].data(), p[4].data()),
+                -expected)
+          << "case " << i;
+      ASSERT_EQ(P::side_of_oriented_sphere(tight_static_filter(p), p[0].data(), p[1].data(), p[2].data(),
+                                           p[3].data(), p[4].data()),
+                expected)
+          << "static filter, case " << i;
+    }
+  }
+}
+
+TEST(Side_of_oriented_sphere, IntegerSpherePointsOffByAnUlp)
+{
+  // Exactly cospherical integer points, then the fifth point moved by 1 ulp,
+  // at several scales (powers of two keep them exactly cospherical).
+  const std::vector<Xyz> sphere = integer_sphere_points(101);
+  Generator g(4);
+  for(double scale : {1.0, std::ldexp(1.0, -400), std::ldexp(1.0, 400), std::ldexp(1.0, -190),
+                      std::ldexp(1.0, 200), 1e-120, 1e120}) {
+    SCOPED_TRACE(scale);
+    std::size_t zeros = 0;
+    for(int i = 0; i < 2000; ++i) {
+      std::array<Coordinates, 5> p;
+      for(Coordinates& q : p) {
+        const Xyz& s = sphere[static_cast<std::size_t>(g.integer(0, int(sphere.size()) - 1))];
+        q = {scale * s.x, scale * s.y, scale * s.z};
+      }
+      if(i % 2 == 1) p[4] = g.nudged(p[4]);
+      const int expected = cgal_side_of_oriented_sphere(p[0], p[1], p[2], p[3], p[4]);
+      ASSERT_EQ(P::side_of_oriented_sphere(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()),
+                expected)
+          << "case " << i;
+      ASSERT_EQ(P::side_of_oriented_sphere(tight_static_filter(p), p[0].data(), p[1].data(), p[2].data(),
+                                           p[3].data(), p[4].data()),
+                expected)
+          << "static filter, case " << i;
+      zeros += expected == 0 ? 1 : 0;
+    }
+    if(scale == 1.0 || scale == std::ldexp(1.0, -400)) {
+      EXPECT_GT(zeros, 500u);
+    }
+  }
+}
+
+TEST(Side_of_oriented_sphere, GridPoints)
+{
+  Generator g(5);
+  for(double scale : {1.0, 1e-120, 1e120, 1e-58, 1e61}) {
+    SCOPED_TRACE(scale);
+    for(int i = 0; i < 3000; ++i) {
+      std::array<Coordinates, 5> p;
+      for(Coordinates& q : p)
+        q = {scale * g.integer(0, 3), scale * g.integer(0, 3), scale * g.integer(0, 3)};
+      ASSERT_EQ(P::side_of_oriented_sphere(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()),
+                cgal_side_of_oriented_sphere(p[0], p[1], p[2], p[3], p[4]));
+    }
+  }
+}
+
+// ---------------------------------------------------------------- symbolic perturbation
+
+// k distinct indices out of n, at random.
+std::vector<std::size_t> pick(Generator& g, std::size_t n, std::size_t k)
+{
+  std::vector<std::size_t> all(n);
+  std::iota(all.begin(), all.end(), std::size_t(0));
+  g.shuffle(all);
+  all.resize(k);
+  return all;
+}
+
+std::vector<std::vector<Point>> five_point_subsets(const std::vector<Point>& points, std::size_t how_many,
+                                                   Generator& g)
+{
+  std::vector<std::vector<Point>> subsets;
+  for(std::size_t s = 0; s < how_many; ++s) {
+    std::vector<Point> subset;
+    for(std::size_t i : pick(g, points.size(), 5)) subset.push_back(points[i]);
+    subsets.push_back(subset);
+  }
+  return subsets;
+}
+
+// Compares the perturbed in-sphere test with CGAL's on every permutation of
+// each 5-point subset whose first four points are positively oriented.
+// Returns the number of comparisons.
+std::size_t expect_perturbed_in_sphere_as_cgal(const std::vector<std::vector<Point>>& subsets)
+{
+  const Cgal_perturbed_predicates cgal{};
+  const K::Orientation_3 orientation = K().orientation_3_object();
+  std::size_t compared = 0;
+  for(std::vector<Point> p : subsets) {
+    std::sort(p.begin(), p.end());
+    std::size_t permutations = 0;
+    do {
+      ++permutations;
+      if(orientation(p[0], p[1], p[2], p[3]) != CGAL::POSITIVE) continue;
+      const Coordinates c[5] = {to_coordinates(p[0]), to_coordinates(p[1]), to_coordinates(p[2]),
+                                to_coordinates(p[3]), to_coordinates(p[4])};
+      const int ours = P::perturbed_side_of_oriented_sphere(c[0].data(), c[1].data(), c[2].data(),
+                                                            c[3].data(), c[4].data());
+      const int expected = static_cast<int>(cgal.side_of_oriented_sphere(p[0], p[1], p[2], p[3], p[4], true));
+      EXPECT_NE(expected, 0);
+      EXPECT_EQ(ours, expected) << p[0] << " | " << p[1] << " | " << p[2] << " | " << p[3] << " | " << p[4];
+      if(ours != expected) return compared;
+      ++compared;
+    } while(std::next_permutation(p.begin(), p.end()));
+    EXPECT_EQ(permutations, 120u);
+  }
+  return compared;
+}
+
+TEST(Perturbation, InSphereOnCosphericalIntegerPoints)
+{
+  Generator g(6);
+  std::size_t compared = 0;
+  // Every 5-subset of the octahedron and of the cube corners.
+  const std::vector<Point> octahedron = {Point(1, 0, 0), Point(-1, 0, 0), Point(0, 1, 0),
+                                         Point(0, -1, 0), Point(0, 0, 1), Point(0, 0, -1)};
+  std::vector<Point> cube;
+  for(int i = 0; i < 8; ++i) cube.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  const std::vector<Point>* sets[] = {&octahedron, &cube};
+  for(const std::vector<Point>* set : sets) {
+    std::vector<std::vector<Point>> subsets;
+    const std::size_t n = set->size();
+    for(std::size_t mask = 0; mask < (std::size_t(1) << n); ++mask) {
+      if(__builtin_popcountll(mask) != 5) continue;
+      std::vector<Point> subset;
+      for(std::size_t i = 0; i < n; ++i)
+        if(mask >> i & 1) subset.push_back((*set)[i]);
+      subsets.push_back(subset);
+    }
+    compared += expect_perturbed_in_sphere_as_cgal(subsets);
+  }
+  // Random subsets of integer spheres (many coplanar quadruples: the second
+  // monomial of the perturbation decides) and of a grid.
+  compared += expect_perturbed_in_sphere_as_cgal(
+      five_point_subsets(to_points<Point>(integer_sphere_points(25)), 150, g));
+  compared += expect_perturbed_in_sphere_as_cgal(
+      five_point_subsets(to_points<Point>(integer_sphere_points(101)), 100, g));
+  std::vector<Point> grid;
+  for(int x = 0; x < 3; ++x)
+    for(int y = 0; y < 3; ++y)
+      for(int z = 0; z < 3; ++z) grid.emplace_back(x, y, z);
+  compared += expect_perturbed_in_sphere_as_cgal(five_point_subsets(grid, 100, g));
+  EXPECT_GT(compared, 10000u);
+}
+
+TEST(Perturbation, InSphereWhenNotDegenerate)
+{
+  // The unperturbed answer passes through: four cospherical points and a
+  // fifth inside or outside their sphere.
+  Generator g(7);
+  const std::vector<Point> sphere = to_points<Point>(integer_sphere_points(25));
+  std::vector<std::vector<Point>> subsets;
+  for(int s = 0; s < 40; ++s) {
+    std::vector<Point> subset;
+    for(std::size_t i : pick(g, sphere.size(), 4)) subset.push_back(sphere[i]);
+    subset.emplace_back(g.integer(-6, 6), g.integer(-6, 6), g.integer(-6, 6));
+    if(std::count(subset.begin(), subset.end() - 1, subset.back()) == 0) subsets.push_back(subset);
+  }
+  EXPECT_GT(expect_perturbed_in_sphere_as_cgal(subsets), 1000u);
+}
+
+// Compares the perturbed in-circle test with CGAL's on every permutation of
+// each coplanar 4-point subset whose first three points are not collinear.
+std::size_t expect_perturbed_in_circle_as_cgal(const std::vector<std::vector<Point>>& subsets)
+{
+  const Cgal_perturbed_predicates cgal{};
+  const K::Collinear_3 collinear = K().collinear_3_object();
+  std::size_t compared = 0;
+  for(std::vector<Point> p : subsets) {
+    EXPECT_TRUE(K().coplanar_3_object()(p[0], p[1], p[2], p[3]));
+    std::sort(p.begin(), p.end());
+    do {
+      if(collinear(p[0], p[1], p[2])) continue;
+      const Coordinates c[4] = {to_coordinates(p[0]), to_coordinates(p[1]), to_coordinates(p[2]),
+                                to_coordinates(p[3])};
+      const int ours =
+          P::perturbed_coplanar_side_of_bounded_circle(c[0].data(), c[1].data(), c[2].data(), c[3].data());
+      const int expected =
+          static_cast<int>(cgal.coplanar_side_of_bounded_circle(p[0], p[1], p[2], p[3], true));
+      EXPECT_NE(expected, 0);
+      EXPECT_EQ(ours, expected) << p[0] << " | " << p[1] << " | " << p[2] << " | " << p[3];
+      if(ours != expected) return compared;
+      ++compared;
+    } while(std::next_permutation(p.begin(), p.end()));
+  }
+  return compared;
+}
+
+TEST(Perturbation, InCircleOnCocircularIntegerPoints)
+{
+  std::vector<std::vector<Point>> subsets;
+  // Every 4-subset of the tilted circle (exactly cocircular).
+  const std::vector<Point> circle = to_points<Point>(tilted_circle_points());
+  for(std::size_t a = 0; a < circle.size(); ++a)
+    for(std::size_t b = a + 1; b < circle.size(); ++b)
+      for(std::size_t c = b + 1; c < circle.size(); ++c)
+        for(std::size_t d = c + 1; d < circle.size(); ++d)
+          subsets.push_back({circle[a], circle[b], circle[c], circle[d]});
+  // Random 4-subsets of a 4 x 4 grid in the same tilted plane (cocircular
+  // squares and rectangles, collinear triples) and of the z = 0 circle of
+  // the sphere x^2 + y^2 + z^2 = 25 with its centre.
+  Generator g(8);
+  std::vector<Point> tilted_grid;
+  for(int u = 0; u < 4; ++u)
+    for(int v = 0; v < 4; ++v) tilted_grid.emplace_back(u + 2 * v, 2 * u + v, 2 * u - 2 * v);
+  for(int s = 0; s < 300; ++s) {
+    std::vector<Point> subset;
+    for(std::size_t i : pick(g, tilted_grid.size(), 4)) subset.push_back(tilted_grid[i]);
+    subsets.push_back(subset);
+  }
+  std::vector<Point> flat_circle = {Point(0, 0, 0)};
+  for(const Point& p : to_points<Point>(integer_sphere_points(25)))
+    if(p.z() == 0) flat_circle.push_back(p);
+  for(int s = 0; s < 100; ++s) {
+    std::vector<Point> subset;
+    for(std::size_t i : pick(g, flat_circle.size(), 4)) subset.push_back(flat_circle[i]);
+    subsets.push_back(subset);
+  }
+  EXPECT_GT(expect_perturbed_in_circle_as_cgal(subsets), 10000u);
+}
+
+// ---------------------------------------------------------------- small helpers
+
+TEST(Helpers, LexicographicOrderAndCollinearityAsCgal)
+{
+  Generator g(9);
+  for(int i = 0; i < 5000; ++i) {
+    const Coordinates p = {double(g.integer(-2, 2)), double(g.integer(-2, 2)), double(g.integer(-2, 2))};
+    const Coordinates q = {double(g.integer(-2, 2)), double(g.integer(-2, 2)), double(g.integer(-2, 2))};
+    const Coordinates r = {double(g.integer(-2, 2)), double(g.integer(-2, 2)), double(g.integer(-2, 2))};
+    const CGAL::Comparison_result cmp = K().compare_xyz_3_object()(to_point(p), to_point(q));
+    ASSERT_EQ(P::lexicographically_smaller(p.data(), q.data()), cmp == CGAL::SMALLER);
+    ASSERT_EQ(P::same_point(p.data(), q.data()), cmp == CGAL::EQUAL);
+    ASSERT_EQ(P::collinear(p.data(), q.data(), r.data()),
+              K().collinear_3_object()(to_point(p), to_point(q), to_point(r)));
+  }
+}
+
+// ---------------------------------------------------------------- filter constants
+
+TEST(Filter_bounds, ConstantsCoverTheirDerivation)
+{
+  // Predicates.h: |error| <= c(eps) * permanent with eps = 2^-53,
+  //   orient3d: c = (7 + 56 eps) eps,   permanent <= 6 mx my mz;
+  //   insphere: c = (16 + 224 eps) eps, permanent <= 4 * 6 mx my mz L.
+  // Computed in long double, which holds these sums exactly enough.
+  const long double eps = std::ldexp(1.0L, -53);
+  const long double orientation = (7 + 56 * eps) * eps * 6;
+  const long double in_sphere = (16 + 224 * eps) * eps * 4 * 6;
+  EXPECT_EQ(P::Filter_bounds::unit_roundoff, std::ldexp(1.0, -53));
+  EXPECT_GE(static_cast<long double>(P::Filter_bounds::orientation), orientation);
+  EXPECT_GE(static_cast<long double>(P::Filter_bounds::in_sphere), in_sphere);
+  EXPECT_LT(static_cast<long double>(P::Filter_bounds::orientation) / orientation - 1, 1e-4L);
+  EXPECT_LT(static_cast<long double>(P::Filter_bounds::in_sphere) / in_sphere - 1, 1e-4L);
+}
+
+TEST(Filter_bounds, LimitsKeepTheBoundsInNormalRange)
+{
+  // Inside the limits (all per-axis maxima in (min, max)), the bound and the
+  // permanent it covers are normal doubles: neither underflows below the
+  // smallest normal (where absolute rounding errors stop scaling) nor
+  // overflows.  Products of three maxima for orient3d, five for insphere.
+  const double lo_o = P::Filter_bounds::orientation_min, hi_o = P::Filter_bounds::orientation_max;
+  const double lo_s = P::Filter_bounds::in_sphere_min, hi_s = P::Filter_bounds::in_sphere_max;
+  EXPECT_GT(P::Filter_bounds::orientation * lo_o * lo_o * lo_o, DBL_MIN);
+  EXPECT_LT(6 * hi_o * hi_o * hi_o, DBL_MAX);
+  EXPECT_GT(P::Filter_bounds::in_sphere * lo_s * lo_s * lo_s * (lo_s * lo_s), DBL_MIN);
+  EXPECT_LT(4 * 6 * hi_s * hi_s * hi_s * (3 * hi_s * hi_s), DBL_MAX);
+}
+
+} // namespace
