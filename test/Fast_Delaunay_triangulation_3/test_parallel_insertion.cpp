@@ -112,6 +112,9 @@ TEST(Parallel_insertion, IntoNonEmptyTriangulation)
 // structure, a lock grid over the bounding box, tbb::global_control.
 TEST(Parallel_insertion, CgalParallelIdiom)
 {
+#if defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "TBB's scheduler is not instrumented for ThreadSanitizer";
+#endif
   typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
                                                CGAL::Delaunay_triangulation_cell_base_3<K>, CGAL::Parallel_tag>
       Tds;
@@ -137,6 +140,9 @@ TEST(Parallel_insertion, CgalParallelIdiom)
 // the other: the result must not change.
 TEST(Parallel_insertion, InsideSingleThreadArena)
 {
+#if defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "TBB's scheduler is not instrumented for ThreadSanitizer";
+#endif
   const std::vector<Point> points = to_points<Point>(make_points("uniform", points_per_case, 23));
   Fast_dt in_arena, free_running;
   in_arena.set_number_of_threads(2);
