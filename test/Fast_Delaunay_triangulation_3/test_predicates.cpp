@@ -255,6 +255,47 @@ TEST(Side_of_oriented_sphere, GridPoints)
   }
 }
 
+// The exact-in-double stage decides integer (and dyadic) inputs whose
+// coordinate differences span few bits; at and just past its limits (spans
+// 9 / 10 for the in-sphere test, 16 / 17 for the orientation) and with
+// inexact differences (an offset of 2^53) the signs must still be CGAL's.
+TEST(Exact_in_double, SpansAroundTheLimits)
+{
+  Generator g(6);
+  for(int range : {1, 7, 255, 511, 1023, 65535, 131071}) {
+    for(double unit : {1.0, 0.125, 1024.0}) {
+      for(double offset : {0.0, 9007199254740992.0}) {
+        SCOPED_TRACE(std::to_string(range) + " " + std::to_string(unit) + " " + std::to_string(offset));
+        for(int i = 0; i < 2000; ++i) {
+          std::array<Coordinates, 5> p;
+          for(Coordinates& q : p)
+            q = {offset + unit * g.integer(0, range), unit * g.integer(0, range), unit * g.integer(0, range)};
+          ASSERT_EQ(P::orientation(p[0].data(), p[1].data(), p[2].data(), p[3].data()),
+                    cgal_orientation(p[0], p[1], p[2], p[3]));
+          ASSERT_EQ(P::side_of_oriented_sphere(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()),
+                    cgal_side_of_oriented_sphere(p[0], p[1], p[2], p[3], p[4]));
+        }
+      }
+    }
+  }
+}
+
+TEST(Exact_in_double, BitSpanOfDifferences)
+{
+  P::Bit_span span;
+  span.add_difference(5.0, 1.0);   // 4 = 2^2
+  span.add_difference(1.5, 1.0);   // 0.5 = 2^-1
+  EXPECT_TRUE(span.exact);
+  EXPECT_EQ(span.high, 2);
+  EXPECT_EQ(span.low, -1);
+  EXPECT_TRUE(span.at_most(4));
+  EXPECT_FALSE(span.at_most(3));
+  P::Bit_span inexact;
+  inexact.add_difference(1.0, 1e-30); // rounds
+  EXPECT_FALSE(inexact.exact);
+  EXPECT_FALSE(inexact.at_most(64));
+}
+
 // ---------------------------------------------------------------- symbolic perturbation
 
 // k distinct indices out of n, at random.

@@ -25,6 +25,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace CGAL {
@@ -167,6 +169,54 @@ inline void max_differences(const double* base, const double* const (&points)[N]
   }
 }
 
+// Exact-in-double stage, between the filters and CGAL's exact number types.
+// When every coordinate difference is computed exactly and the significant
+// bits of all of them span at most `max_span` binary orders, each product
+// and sum of a determinant of degree k is a multiple of 2^(k * lowest bit)
+// smaller than 2^53 times that granularity, hence exactly representable: the
+// floating-point value is the exact one, zero included.  Integer grids and
+// other low-precision degenerate inputs are decided here, about a hundred
+// times faster than with exact numbers.  Spans (|d| < 2^(high+1), d a
+// multiple of 2^low): in-sphere, degree 5, permanent <= 72 |d|^5, needs
+// 5 (high + 1 - low) + log2(72) <= 53, i.e. a span of at most 9;
+// orientation, degree 3, permanent <= 6 |d|^3: a span of at most 16.
+struct Bit_span
+{
+  int high = std::numeric_limits<int>::min();
+  int low = std::numeric_limits<int>::max();
+  bool exact = true;
+
+  void add_difference(double a, double b)
+  {
+    const double d = a - b;
+    // Knuth's two-difference: the rounding error of a - b, zero iff exact.
+    const double b_virtual = a - d;
+    const double a_virtual = d + b_virtual;
+    if((a - a_virtual) + (b_virtual - b) != 0) exact = false;
+    if(d == 0 || !exact) return;
+    std::uint64_t bits;
+    std::memcpy(&bits, &d, sizeof bits);
+    const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+    if(biased == 0) { // subnormal
+      exact = false;
+      return;
+    }
+    const std::uint64_t mantissa = (bits & ((std::uint64_t(1) << 52) - 1)) | (std::uint64_t(1) << 52);
+    const int exponent = biased - 1075;
+    low = std::min(low, exponent + __builtin_ctzll(mantissa));
+    high = std::max(high, exponent + 52);
+  }
+
+  // Also keeps every product of up to five differences away from underflow
+  // and overflow.
+  bool at_most(int max_span) const
+  {
+    if(!exact) return false;
+    if(high == std::numeric_limits<int>::min()) return true; // all differences zero
+    return low >= -200 && high <= 190 && high + 1 - low <= max_span;
+  }
+};
+
 // Exact sign of orientation(p, q, r, s).
 inline int orientation(const double* p, const double* q, const double* r, const double* s)
 {
@@ -181,6 +231,10 @@ inline int orientation(const double* p, const double* q, const double* r, const 
     if(det > bound) return 1;
     if(det < -bound) return -1;
   }
+  Bit_span span;
+  for(const double* x : others)
+    for(int a = 0; a < 3; ++a) span.add_difference(x[a], p[a]);
+  if(span.at_most(16)) return (det > 0) - (det < 0);
   return predicates_detail::orientation_exact(p, q, r, s);
 }
 
@@ -200,6 +254,10 @@ inline int side_of_oriented_sphere(const double* p, const double* q, const doubl
     if(det > bound) return -1;
     if(det < -bound) return 1;
   }
+  Bit_span span;
+  for(const double* x : others)
+    for(int a = 0; a < 3; ++a) span.add_difference(x[a], t[a]);
+  if(span.at_most(9)) return (det < 0) - (det > 0);
   return predicates_detail::side_of_oriented_sphere_exact(p, q, r, s, t);
 }
 
@@ -259,19 +317,30 @@ inline int perturbed_side_of_oriented_sphere(const double* p0, const double* p1,
   const int side = side_of_oriented_sphere(filter, p0, p1, p2, p3, p);
   if(side != 0) return side;
 
-  const double* points[5] = {p0, p1, p2, p3, p};
-  std::sort(points, points + 5, lexicographically_smaller);
+  // Only the two lexicographically largest points matter: on integer grids
+  // most tests are exact ties, so this path is hot there.
+  const double* const points[5] = {p0, p1, p2, p3, p};
+  const double* largest = points[0];
+  const double* second = nullptr;
+  for(int i = 1; i < 5; ++i) {
+    if(lexicographically_smaller(largest, points[i])) {
+      second = largest;
+      largest = points[i];
+    } else if(second == nullptr || lexicographically_smaller(second, points[i])) {
+      second = points[i];
+    }
+  }
   // The perturbation is a polynomial in an infinitesimal whose monomials are
   // ranked by the lexicographic order; the two largest points decide
   // (Devillers & Teillaud, "Perturbations for Delaunay and weighted Delaunay 3D
   // triangulations", 2011).
-  for(int i = 4; i > 2; --i) {
-    if(points[i] == p) return -1;
+  for(const double* top : {largest, second}) {
+    if(top == p) return -1;
     int o = 0;
-    if(points[i] == p3 && (o = orientation(p0, p1, p2, p)) != 0) return o;
-    if(points[i] == p2 && (o = orientation(p0, p1, p, p3)) != 0) return o;
-    if(points[i] == p1 && (o = orientation(p0, p, p2, p3)) != 0) return o;
-    if(points[i] == p0 && (o = orientation(p, p1, p2, p3)) != 0) return o;
+    if(top == p3 && (o = orientation(p0, p1, p2, p)) != 0) return o;
+    if(top == p2 && (o = orientation(p0, p1, p, p3)) != 0) return o;
+    if(top == p1 && (o = orientation(p0, p, p2, p3)) != 0) return o;
+    if(top == p0 && (o = orientation(p, p1, p2, p3)) != 0) return o;
   }
   CGAL_assertion_msg(false, "perturbation did not decide: duplicate points?");
   return -1;
@@ -287,7 +356,8 @@ inline int perturbed_coplanar_side_of_bounded_circle(const double* p0, const dou
   if(side != 0) return side;
 
   const double* points[4] = {p0, p1, p2, p};
-  std::sort(points, points + 4, lexicographically_smaller);
+  std::sort(points, points + 4,
+            [](const double* a, const double* b) { return lexicographically_smaller(a, b); });
   const int local = coplanar_orientation_exact(p0, p1, p2);
   for(int i = 3; i > 0; --i) {
     if(points[i] == p) return -1;
