@@ -25,6 +25,7 @@
 #include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -575,7 +576,12 @@ private:
   {
     if(threads_ > 0) return threads_;
 #ifdef CGAL_LINKED_WITH_TBB
-    return std::max(1, std::min(255, tbb::this_task_arena::max_concurrency()));
+    // The arena's concurrency ignores a tbb::global_control limit: take both.
+    const std::size_t allowed =
+        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+    const int threads = static_cast<int>(std::min<std::size_t>(
+        allowed, static_cast<std::size_t>(tbb::this_task_arena::max_concurrency())));
+    return std::max(1, std::min(255, threads));
 #else
     return 1;
 #endif

@@ -115,7 +115,7 @@ public:
 
     const Clock::time_point t0 = Clock::now();
     const std::size_t first_new = number_of_vertices();
-    Brio_order order = brio_order(xyz, n, seed);
+    Brio_order order = brio_order(xyz, n, seed, partitions);
     mesh.vertices.resize(first_new + n);
     for(std::size_t i = 0; i < n; ++i) {
       Vertex_record& r = mesh.vertices[first_new + i];
