@@ -341,6 +341,7 @@ public:
   // Cache the in-sphere sub-determinants of the paper's §2.4 (32 more bytes
   // per cell); off by default, see Sub_determinants.h for the measurement.
   void set_sub_determinants(bool on) { core_.set_sub_determinants(on); }
+  bool sub_determinants() const { return core_.sub_determinants(); }
   // Number of Moore partitions inserted concurrently by the parallel engine
   // (paper §3); 1 is the sequential kernel.  The threads that run them are
   // those of the caller's TBB arena, so tbb::global_control and
@@ -349,7 +350,6 @@ public:
   // caller's arena; the default with Sequential_tag is 1.
   void set_number_of_threads(int n) { threads_ = std::max(0, std::min(n, 255)); }
   int number_of_threads() const { return threads_; }
-  bool sub_determinants() const { return core_.sub_determinants(); }
 
   // ---------------------------------------------------------------- insertion
   // Inserts the points of [first, last); returns the number of new vertices.
@@ -374,6 +374,7 @@ public:
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
     incident_cells_.clear();
+    core_.partitions = 1; // one point: no partitioned round to run
     return Vertex_handle(this, core_.insert_one(xyz));
   }
   Vertex_handle insert(const Point& p, Cell_handle) { return insert(p); }
