@@ -506,6 +506,29 @@ private:
   std::size_t cavity_ghosts_ = 0;
 };
 
+// Algorithm 1's loop: inserts the vertices of `points` (records written) in
+// order with the sequential kernel, starting from `hint`.  For a duplicate v,
+// duplicate_of[v - first_new] receives the vertex it equals.
+inline void insert_in_order(Flat_storage& m, const std::vector<Vertex_id>& points, Vertex_id first_new,
+                            std::vector<Vertex_id>& duplicate_of, Tet_id& hint, const Static_filter& filter,
+                            const Sub_determinant_filter& sub_filter, bool timed, Kernel_statistics& stats)
+{
+  Insertion_scratch scratch;
+  scratch.timed = timed;
+  Delaunay_kernel<> kernel(m, scratch, Mesh_slots{&m}, filter, sub_filter);
+  if(!m.is_live(hint)) hint = m.first_live_tet();
+  for(Vertex_id v : points) {
+    Vertex_id existing = ghost_vertex;
+    if(kernel.insert(v, hint, existing) == Insertion_result::duplicate) {
+      CGAL_assertion(v >= first_new);
+      duplicate_of[v - first_new] = existing;
+    }
+  }
+  m.live_tets += scratch.live_delta;
+  m.ghost_tets += scratch.ghost_delta;
+  stats.add(scratch.stats);
+}
+
 } // namespace Fast_Delaunay_triangulation_3_internal
 } // namespace CGAL
 

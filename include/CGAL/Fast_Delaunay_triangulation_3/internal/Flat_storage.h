@@ -210,6 +210,14 @@ struct Flat_storage
     if(with_sub_determinants) tet_sub_determinants.reserve(4 * total);
   }
 
+  // A live tetrahedron to start walks from when no better hint is known.
+  Tet_id first_live_tet() const
+  {
+    for(Tet_id t = 0; t < number_of_slots(); ++t)
+      if(is_live(t)) return t;
+    return 0;
+  }
+
   // A slot for a new tetrahedron: a freed one if any, else a new one at the end.
   Tet_id new_tet()
   {

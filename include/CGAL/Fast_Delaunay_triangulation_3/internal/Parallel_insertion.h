@@ -123,34 +123,17 @@ public:
       row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       rounds.push_back(row);
     }
-    if(!m_.is_live(hint)) hint = first_live_tet(m_);
+    if(!m_.is_live(hint)) hint = m_.first_live_tet();
   }
 
   void set_vertices_in_mesh(std::size_t n) { vertices_in_mesh_ = n; }
 
-  static Tet_id first_live_tet(const Flat_storage& m)
-  {
-    for(Tet_id t = 0; t < m.number_of_slots(); ++t)
-      if(m.is_live(t)) return t;
-    return 0;
-  }
 
 private:
   void insert_sequentially(const std::vector<Vertex_id>& points, Vertex_id first_new,
                            std::vector<Vertex_id>& duplicate_of, Tet_id& hint, Kernel_statistics& stats)
   {
-    Insertion_scratch scratch;
-    scratch.timed = timed_;
-    Delaunay_kernel<> kernel(m_, scratch, Mesh_slots{&m_}, filter_, sub_filter_);
-    if(!m_.is_live(hint)) hint = first_live_tet(m_);
-    for(Vertex_id v : points) {
-      Vertex_id existing = ghost_vertex;
-      if(kernel.insert(v, hint, existing) == Insertion_result::duplicate)
-        duplicate_of[v - first_new] = existing;
-    }
-    m_.live_tets += scratch.live_delta;
-    m_.ghost_tets += scratch.ghost_delta;
-    stats.add(scratch.stats);
+    insert_in_order(m_, points, first_new, duplicate_of, hint, filter_, sub_filter_, timed_, stats);
   }
 
   // Moore keys on a transformed grid (§3.3): attempt 0 uses the plain curve;

@@ -173,24 +173,22 @@ private:
   void insert_range(Vertex_id begin, Vertex_id end, Vertex_id first_new,
                     std::vector<Vertex_id>& duplicate_of, const Vertex_id* skip = nullptr)
   {
-    Insertion_scratch scratch;
-    scratch.timed = timed;
-    Delaunay_kernel<> kernel(mesh, scratch, Mesh_slots{&mesh}, Static_filter::for_box(box_lo_, box_hi_),
-                             Sub_determinant_filter::for_box(box_lo_, box_hi_));
-    if(!mesh.is_live(hint_)) hint_ = first_live_tet();
     const Clock::time_point t0 = Clock::now();
-    for(Vertex_id v = begin; v < end; ++v) {
-      if(skip && (v == skip[0] || v == skip[1] || v == skip[2] || v == skip[3])) continue;
-      Vertex_id existing = ghost_vertex;
-      if(kernel.insert(v, hint_, existing) == Insertion_result::duplicate) {
-        CGAL_assertion(v >= first_new);
-        duplicate_of[v - first_new] = existing;
-      }
-    }
-    mesh.live_tets += scratch.live_delta;
-    mesh.ghost_tets += scratch.ghost_delta;
+    insert_in_order(mesh, vertex_list(begin, end, skip), first_new, duplicate_of, hint_,
+                    Static_filter::for_box(box_lo_, box_hi_), Sub_determinant_filter::for_box(box_lo_, box_hi_),
+                    timed, last_report.kernel);
     last_report.insertion_seconds += seconds(t0, Clock::now());
-    last_report.kernel.add(scratch.stats);
+  }
+
+  static std::vector<Vertex_id> vertex_list(std::size_t begin, std::size_t end, const Vertex_id* skip)
+  {
+    std::vector<Vertex_id> list;
+    list.reserve(end - begin);
+    for(std::size_t i = begin; i < end; ++i) {
+      const Vertex_id v = static_cast<Vertex_id>(i);
+      if(!skip || (v != skip[0] && v != skip[1] && v != skip[2] && v != skip[3])) list.push_back(v);
+    }
+    return list;
   }
 
   // Grows the bounding box of all vertices (kept incrementally: single-point
@@ -229,25 +227,14 @@ private:
     engine.set_vertices_in_mesh(first_new);
     std::size_t begin = 0;
     for(std::size_t r = 0; r < round_end.size(); ++r) {
-      std::vector<Vertex_id> points;
-      points.reserve(round_end[r] - begin);
-      for(std::size_t i = begin; i < round_end[r]; ++i) {
-        const Vertex_id v = static_cast<Vertex_id>(first_new + i);
-        if(!skip || (v != skip[0] && v != skip[1] && v != skip[2] && v != skip[3])) points.push_back(v);
-      }
-      engine.insert(std::move(points), r == 0 ? 1 : partitions, first_new, duplicate_of, hint_,
+      engine.insert(vertex_list(first_new + begin, first_new + round_end[r], skip), r == 0 ? 1 : partitions,
+                    first_new, duplicate_of, hint_,
                     last_report.rounds, last_report.kernel);
       begin = round_end[r];
     }
     last_report.insertion_seconds += seconds(t0, Clock::now());
   }
 
-  Tet_id first_live_tet() const
-  {
-    for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
-      if(mesh.is_live(t)) return t;
-    return 0;
-  }
 
   // Dimension < 3 before this insertion: find four affinely independent
   // vertices (exactly) among all vertices; if they exist, build the 3D
