@@ -184,7 +184,7 @@ const std::vector<Engine>& engine_table()
       {"cgal", false, true, run_cgal},
 #ifdef CGAL_LINKED_WITH_TBB
       {"cgal-par", true, true, run_cgal_parallel},
-      {"fast-par", true, false, run_fast_parallel},
+      {"fast-par", true, true, run_fast_parallel},
 #endif
   };
   return engines;
