@@ -54,7 +54,6 @@ struct Partition_round
 // fixed range of new slots reserved for it before the tasks start.
 struct Partition_slots
 {
-  Flat_storage* mesh;
   std::vector<Tet_id>* free;
   Tet_id next_fresh, end_fresh;
 
@@ -127,7 +126,6 @@ public:
   }
 
   void set_vertices_in_mesh(std::size_t n) { vertices_in_mesh_ = n; }
-
 
 private:
   void insert_sequentially(const std::vector<Vertex_id>& points, Vertex_id first_new,
@@ -208,7 +206,7 @@ private:
     fresh_begin[0] = m_.number_of_slots();
     for(int j = 0; j < partitions; ++j)
       fresh_begin[j + 1] = fresh_begin[j] + 8 * (cut[j + 1] - cut[j]) + 1024;
-    grow_arrays(fresh_begin[partitions]);
+    resize_cell_arrays(fresh_begin[partitions]);
 
     std::vector<Tet_id> hints = owned_start_tets(partitions);
     std::vector<std::vector<Tet_id>> free_lists(partitions);
@@ -226,7 +224,7 @@ private:
       ownership.partition_of_vertex = partition_of_vertex_.data();
       ownership.partition = static_cast<std::uint8_t>(j);
       Delaunay_kernel<Partition_ownership, Partition_slots> kernel(
-          m_, scratch, Partition_slots{&m_, &free_lists[j], fresh_begin[j], fresh_begin[j + 1]}, filter_,
+          m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1]}, filter_,
           sub_filter_, ownership);
       Tet_id hint = hints[j];
       for(std::size_t i = cut[j]; i < cut[j + 1]; ++i) {
@@ -253,17 +251,16 @@ private:
       failed.insert(failed.end(), failures[j].begin(), failures[j].end());
     }
     // The last partition's unused range is simply cut off the arrays.
-    shrink_arrays(next_fresh[partitions - 1]);
+    resize_cell_arrays(next_fresh[partitions - 1]);
   }
 
-  void grow_arrays(std::size_t slots)
+  void resize_cell_arrays(std::size_t slots)
   {
     m_.tet_vertices.resize(4 * slots);
     m_.tet_neighbors.resize(4 * slots);
     m_.tet_flags.resize(slots);
     if(m_.with_sub_determinants) m_.tet_sub_determinants.resize(4 * slots);
   }
-  void shrink_arrays(std::size_t slots) { grow_arrays(slots); }
 
   // A live tetrahedron owned by each partition (no_tet if none), found by one
   // sequential scan before the tasks start, so that no task reads cells
