@@ -44,7 +44,7 @@ struct Boundary_facet
   std::uint8_t unused;
   Facet_code outside;
 };
-static_assert(sizeof(Boundary_facet) == 24, "boundary facet record");
+static_assert(sizeof(Boundary_facet) <= 24, "boundary facet record");
 
 // Counters and optional per-phase times (paper Table 1).
 struct Kernel_statistics
@@ -100,7 +100,7 @@ struct Insertion_scratch
 // Recomputes the cached sub-determinants of tetrahedron t from its vertices.
 inline void update_sub_determinants(Flat_storage& m, Tet_id t)
 {
-  const Vertex_id* tv = &m.tet_vertices[4 * t];
+  const Vertex_id* tv = m.vertex_ids(t);
   double* s = &m.tet_sub_determinants[4 * t];
   if(tv[3] == ghost_vertex)
     compute_ghost_normal(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), s);
@@ -131,7 +131,7 @@ struct Partition_ownership
 
   bool owns(const Flat_storage& m, Tet_id t) const
   {
-    const Vertex_id* tv = &m.tet_vertices[4 * t];
+    const Vertex_id* tv = m.vertex_ids(t);
     return partition_of_vertex[tv[0]] == partition && partition_of_vertex[tv[1]] == partition &&
            partition_of_vertex[tv[2]] == partition &&
            (tv[3] == ghost_vertex || partition_of_vertex[tv[3]] == partition);
@@ -228,7 +228,7 @@ public:
     const std::uint64_t step_limit = 64 + 8 * m_.number_of_slots();
     for(;;) {
       if(m_.is_ghost(t)) break;
-      const Vertex_id* tv = &m_.tet_vertices[4 * t];
+      const Vertex_id* tv = m_.vertex_ids(t);
       const double* w[4] = {m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), m_.point(tv[3])};
       const int first = static_cast<int>(s_.next_random() & 3);
       Tet_id next = Tet_id(-1);
@@ -256,7 +256,7 @@ public:
   // Conflict test of a live tetrahedron with p (perturbed, never a tie).
   __attribute__((always_inline)) bool in_conflict(Tet_id t, const double* p) const
   {
-    const Vertex_id* tv = &m_.tet_vertices[4 * t];
+    const Vertex_id* tv = m_.vertex_ids(t);
     if(m_.with_sub_determinants) {
       const double* s = &m_.tet_sub_determinants[4 * t];
       const int side = tv[3] == ghost_vertex
@@ -300,30 +300,30 @@ private:
     boundary.clear();
     s_.boundary_vertices.clear();
     cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
-    m_.tet_flags[start] = m_.tet_flags[start] | Tet_flags::deleted;
+    m_.mark_free(start);
     cavity.push_back(start);
 
     for(std::size_t k = 0; k < cavity.size(); ++k) {
       const Tet_id t = cavity[k];
       for(int f = 0; f < 4; ++f) {
-        const Facet_code code = m_.tet_neighbors[4 * t + f];
+        const Facet_code code = m_.neighbor_code(t, f);
         const Tet_id u = tet_of(code);
-        const Tet_flags flags = m_.tet_flags[u];
-        if(has(flags, Tet_flags::deleted)) continue;
+        const Vertex_id* uv = m_.vertex_ids(u);
+        if(uv[0] & mark_bit) continue; // in the cavity already
         // A tetrahedron touching the cavity through several facets is tested once.
-        if(!has(flags, Tet_flags::outside)) {
+        if(!(uv[1] & mark_bit)) {
           ++s_.stats.conflict_tests;
           if(in_conflict(u, p)) {
             if(!ownership_.owns(m_, u)) {
               undo_cavity();
               return false;
             }
-            m_.tet_flags[u] = flags | Tet_flags::deleted;
+            m_.mark_free(u);
             cavity.push_back(u);
             cavity_ghosts_ += m_.is_ghost(u) ? 1 : 0;
             continue;
           }
-          m_.tet_flags[u] = flags | Tet_flags::outside;
+          m_.mark_outside(u);
         }
         push_boundary_facet(t, f, code);
       }
@@ -335,22 +335,23 @@ private:
 
   void clear_outside_flags()
   {
-    for(const Boundary_facet& b : s_.boundary)
-      m_.tet_flags[tet_of(b.outside)] = without(m_.tet_flags[tet_of(b.outside)], Tet_flags::outside);
+    for(const Boundary_facet& b : s_.boundary) m_.unmark_outside(tet_of(b.outside));
   }
 
   // Puts back what CAVITY changed: flags and boundary vertex numbers.
   void undo_cavity()
   {
-    for(Tet_id t : s_.cavity) m_.tet_flags[t] = without(m_.tet_flags[t], Tet_flags::deleted);
+    for(Tet_id t : s_.cavity) m_.unmark_free(t);
     clear_outside_flags();
     for(Vertex_id v : s_.boundary_vertices) m_.vertices[v].scratch = 0;
   }
 
   void push_boundary_facet(Tet_id t, int f, Facet_code outside)
   {
-    const Vertex_id* tv = &m_.tet_vertices[4 * t];
-    Vertex_id a = tv[facet_vertex[f][0]], b = tv[facet_vertex[f][1]], c = tv[facet_vertex[f][2]];
+    // t is in the cavity: its v[0] carries the mark.
+    const Vertex_id* tv = m_.vertex_ids(t);
+    Vertex_id a = tv[facet_vertex[f][0]] & ~mark_bit, b = tv[facet_vertex[f][1]] & ~mark_bit,
+              c = tv[facet_vertex[f][2]] & ~mark_bit;
     // An even rotation keeps the orientation and puts the ghost in slot 3.
     if(a == ghost_vertex) {
       a = b; b = c; c = ghost_vertex;
@@ -412,11 +413,10 @@ private:
 
   void write_ball_tet(Tet_id t, Vertex_id p, const Boundary_facet& b)
   {
-    Vertex_id* tv = &m_.tet_vertices[4 * t];
-    tv[0] = p; tv[1] = b.v[0]; tv[2] = b.v[1]; tv[3] = b.v[2];
-    m_.tet_neighbors[4 * t] = b.outside;
-    m_.tet_neighbors[b.outside] = facet_code(t, 0);
-    m_.tet_flags[t] = Tet_flags::none;
+    Tet_record& r = m_.tets[t];
+    r.v[0] = p; r.v[1] = b.v[0]; r.v[2] = b.v[1]; r.v[3] = b.v[2];
+    r.n[0] = b.outside;
+    m_.neighbor_code(b.outside) = facet_code(t, 0);
     if(b.v[2] == ghost_vertex) ++s_.ghost_delta;
     if(m_.with_sub_determinants) update_sub_determinants(m_, t);
   }
@@ -457,7 +457,7 @@ private:
     for(std::size_t k = 0; k < facets; ++k) {
       const Boundary_facet& b = s_.boundary[k];
       const unsigned a = b.local[0], bb = b.local[1], c = b.local[2];
-      Facet_code* nb = &m_.tet_neighbors[4 * s_.ball[k]];
+      Facet_code* nb = m_.tets[s_.ball[k]].n;
       nb[1] = s_.edge_table[c * n + bb];
       nb[2] = s_.edge_table[a * n + c];
       nb[3] = s_.edge_table[bb * n + a];
@@ -493,7 +493,7 @@ private:
                                    return x.key < k;
                                  });
       CGAL_assertion(it != edges.end() && it->key == reverse);
-      m_.tet_neighbors[e.facet] = it->facet;
+      m_.neighbor_code(e.facet) = it->facet;
     }
   }
 

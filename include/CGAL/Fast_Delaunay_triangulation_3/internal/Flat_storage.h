@@ -2,32 +2,45 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The flat mesh data structure of the paper (§2.2, Listing 1): one array of
-// 32-byte vertex records, and tetrahedra as parallel arrays of 4 vertex ids,
-// 4 neighbour codes and a flag byte.  The ghost vertex (§2.6) has no record; it
-// is the id `ghost_vertex` and sits in slot 3 of every ghost tetrahedron.
+// 32-byte vertex records and one array of tetrahedron records, each holding
+// the 4 vertex ids and the 4 neighbour codes of a tetrahedron side by side.
+// The paper keeps them in separate arrays; a cavity search then misses the
+// cache once per array for every tetrahedron it looks at, while one record
+// costs one miss.  With 32-bit neighbour codes (the default) a record is 32
+// bytes, two per cache line; CGAL_FDT3_64_BIT_FACET_CODES lifts the limit of
+// 2^30 tetrahedra (about 160 million points) at 48 bytes per record.  The
+// ghost vertex (§2.6) has no vertex record; it is the id `ghost_vertex` and
+// sits in slot 3 of every ghost tetrahedron.
 //
 //                 v3
 //                 /|\          facet i is opposite vertex i;
 //                / | \         neighbour code 4*t + i names facet i of t;
-//               /  |  \        neighbors[4*t + i] = 4*u + j where facet j of
-//            v0 ---|--- v2     u is the same facet, so the back pointer is
-//               \  |  /        neighbors[4*u + j] == 4*t + i.
+//               /  |  \        n[i] of t = 4*u + j where facet j of u is
+//            v0 ---|--- v2     the same facet, so the back pointer is
+//               \  |  /        n[j] of u == 4*t + i.
 //                \ | /         Stored tetrahedra are positively oriented:
 //                 \|/          orientation(v0, v1, v2, v3) > 0 (CGAL's sign).
 //                 v1
 //
-// Deleted slots are flagged and kept on a free list; iterators skip them.
+// Marks live in the top bit of the vertex ids (vertex ids stay below 2^31):
+// the top bit of v[0] flags a free slot or a tetrahedron of the cavity being
+// carved, the top bit of v[1] a tetrahedron found outside that cavity.  Live
+// tetrahedra carry no marks between insertions, so every reader outside the
+// kernel sees plain vertex ids.  Free slots are kept on a free list;
+// iterators skip them.
 
 #ifndef CGAL_FDT3_INTERNAL_FLAT_STORAGE_H
 #define CGAL_FDT3_INTERNAL_FLAT_STORAGE_H
 
 #include <CGAL/assertions.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <new>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -37,22 +50,37 @@ namespace Fast_Delaunay_triangulation_3_internal {
 
 typedef std::uint32_t Vertex_id;
 typedef std::uint64_t Tet_id;
+#ifdef CGAL_FDT3_64_BIT_FACET_CODES
 typedef std::uint64_t Facet_code; // 4 * tetrahedron + facet
+#else
+typedef std::uint32_t Facet_code; // 4 * tetrahedron + facet
+#endif
 
-constexpr Vertex_id ghost_vertex = std::numeric_limits<Vertex_id>::max();
+constexpr Vertex_id mark_bit = Vertex_id(1) << 31;
+constexpr Vertex_id ghost_vertex = mark_bit - 1;
 constexpr Vertex_id max_vertices = ghost_vertex - 1;
+// Tetrahedron slots addressable by a facet code.
+constexpr std::uint64_t max_tets = (std::uint64_t(std::numeric_limits<Facet_code>::max()) >> 2) + 1;
 
-inline Tet_id tet_of(Facet_code code) { return code >> 2; }
+inline Tet_id tet_of(Facet_code code) { return Tet_id(code >> 2); }
 inline int facet_of(Facet_code code) { return static_cast<int>(code & 3); }
-inline Facet_code facet_code(Tet_id t, int facet) { return (t << 2) | static_cast<Facet_code>(facet); }
+inline Facet_code facet_code(Tet_id t, int facet)
+{
+  return static_cast<Facet_code>((t << 2) | static_cast<Tet_id>(facet));
+}
 
 // Growable array of trivially copyable elements that never value-initialises:
 // the kernel writes every slot before reading it, and zero-filling hundreds of
-// megabytes would cost as much as a triangulation round.
+// megabytes would cost as much as a triangulation round.  Elements start on a
+// cache-line boundary: glibc returns large blocks 16 bytes past a page
+// boundary, which would make every other 32-byte record straddle two lines.
+// Growth still goes through realloc (page remapping, no copy for large
+// blocks); the rare change of offset inside the block is a memmove.
 template <class T>
 class Raw_array
 {
   static_assert(std::is_trivially_copyable<T>::value, "Raw_array holds plain records");
+  static constexpr std::size_t alignment = 64;
 
 public:
   Raw_array() = default;
@@ -76,10 +104,11 @@ public:
     swap(other);
     return *this;
   }
-  ~Raw_array() { std::free(data_); }
+  ~Raw_array() { std::free(block_); }
 
   void swap(Raw_array& other) noexcept
   {
+    std::swap(block_, other.block_);
     std::swap(data_, other.data_);
     std::swap(size_, other.size_);
     std::swap(capacity_, other.capacity_);
@@ -95,11 +124,7 @@ public:
 
   void reserve(std::size_t n)
   {
-    if(n <= capacity_) return;
-    T* grown = static_cast<T*>(std::realloc(static_cast<void*>(data_), n * sizeof(T)));
-    if(grown == nullptr) throw std::bad_alloc();
-    data_ = grown;
-    capacity_ = n;
+    if(n > capacity_) reallocate(n);
   }
   // New elements are left uninitialised.
   void resize(std::size_t n)
@@ -117,19 +142,32 @@ public:
   {
     if(size_ == capacity_) return;
     if(size_ == 0) {
-      std::free(data_);
+      std::free(block_);
+      block_ = nullptr;
       data_ = nullptr;
       capacity_ = 0;
       return;
     }
-    T* shrunk = static_cast<T*>(std::realloc(static_cast<void*>(data_), size_ * sizeof(T)));
-    if(shrunk != nullptr) {
-      data_ = shrunk;
-      capacity_ = size_;
-    }
+    reallocate(size_);
   }
 
 private:
+  void reallocate(std::size_t n)
+  {
+    const std::size_t old_offset =
+        block_ == nullptr ? 0 : static_cast<std::size_t>(reinterpret_cast<char*>(data_) - block_);
+    char* grown = static_cast<char*>(std::realloc(block_, n * sizeof(T) + alignment));
+    if(grown == nullptr) throw std::bad_alloc();
+    const std::size_t offset =
+        (alignment - reinterpret_cast<std::uintptr_t>(grown) % alignment) % alignment;
+    if(offset != old_offset && size_ != 0)
+      std::memmove(grown + offset, grown + old_offset, size_ * sizeof(T));
+    block_ = grown;
+    data_ = reinterpret_cast<T*>(grown + offset);
+    capacity_ = n;
+  }
+
+  char* block_ = nullptr;
   T* data_ = nullptr;
   std::size_t size_ = 0;
   std::size_t capacity_ = 0;
@@ -146,67 +184,70 @@ struct Vertex_record
 };
 static_assert(sizeof(Vertex_record) == 32, "a vertex record is half a cache line");
 
-// A scoped enum, not a plain byte: writes through unsigned char may alias
-// anything, which would make the compiler reload every array pointer in the
-// cavity loop after each flag write.
-enum class Tet_flags : std::uint8_t {
-  none = 0,
-  deleted = 1,  // slot free, or in the cavity being carved
-  outside = 2,  // tested outside the current cavity (cleared after the insertion)
+struct Tet_record
+{
+  Vertex_id v[4];
+  Facet_code n[4];
 };
-inline Tet_flags operator|(Tet_flags a, Tet_flags b)
-{
-  return static_cast<Tet_flags>(static_cast<std::uint8_t>(a) | static_cast<std::uint8_t>(b));
-}
-inline Tet_flags without(Tet_flags a, Tet_flags b)
-{
-  return static_cast<Tet_flags>(static_cast<std::uint8_t>(a) & ~static_cast<std::uint8_t>(b));
-}
-inline bool has(Tet_flags a, Tet_flags b)
-{
-  return (static_cast<std::uint8_t>(a) & static_cast<std::uint8_t>(b)) != 0;
-}
+static_assert(sizeof(Tet_record) == 16 + 4 * sizeof(Facet_code), "tetrahedron record without padding");
 
 struct Flat_storage
 {
   Raw_array<Vertex_record> vertices;
-  Raw_array<Vertex_id> tet_vertices;   // 4 per tetrahedron
-  Raw_array<Facet_code> tet_neighbors; // 4 per tetrahedron
-  Raw_array<Tet_flags> tet_flags;     // 1 per tetrahedron
+  Raw_array<Tet_record> tets;
   // 4 per tetrahedron when sub-determinants are on (Sub_determinants.h), else empty.
   Raw_array<double> tet_sub_determinants;
   bool with_sub_determinants = false;
-  std::vector<Tet_id> free_tets;       // deleted slots available for reuse
+  std::vector<Tet_id> free_tets;       // free slots available for reuse
   std::size_t live_tets = 0;           // slots in use (finite and ghost)
   std::size_t ghost_tets = 0;          // slots in use that have the ghost vertex
 
-  std::size_t number_of_slots() const { return tet_flags.size(); }
-  bool is_live(Tet_id t) const { return !has(tet_flags[t], Tet_flags::deleted); }
-  bool is_ghost(Tet_id t) const { return tet_vertices[4 * t + 3] == ghost_vertex; }
+  std::size_t number_of_slots() const { return tets.size(); }
+  bool is_live(Tet_id t) const { return (tets[t].v[0] & mark_bit) == 0; }
+  bool is_ghost(Tet_id t) const { return tets[t].v[3] == ghost_vertex; }
   const double* point(Vertex_id v) const { return vertices[v].xyz; }
-  Vertex_id vertex(Tet_id t, int i) const { return tet_vertices[4 * t + i]; }
-  Facet_code neighbor_code(Tet_id t, int i) const { return tet_neighbors[4 * t + i]; }
-  Tet_id neighbor(Tet_id t, int i) const { return tet_of(tet_neighbors[4 * t + i]); }
+  Vertex_id vertex(Tet_id t, int i) const { return tets[t].v[i]; }
+  Vertex_id* vertex_ids(Tet_id t) { return tets[t].v; }
+  const Vertex_id* vertex_ids(Tet_id t) const { return tets[t].v; }
+  Facet_code neighbor_code(Tet_id t, int i) const { return tets[t].n[i]; }
+  Facet_code& neighbor_code(Facet_code code) { return tets[tet_of(code)].n[facet_of(code)]; }
+  Facet_code neighbor_code(Facet_code code) const { return tets[tet_of(code)].n[facet_of(code)]; }
+  Tet_id neighbor(Tet_id t, int i) const { return tet_of(tets[t].n[i]); }
+
+  // Marks of the kernel (see the top of this file).
+  void mark_free(Tet_id t) { tets[t].v[0] |= mark_bit; }
+  void unmark_free(Tet_id t) { tets[t].v[0] &= ~mark_bit; }
+  bool is_marked_outside(Tet_id t) const { return (tets[t].v[1] & mark_bit) != 0; }
+  void mark_outside(Tet_id t) { tets[t].v[1] |= mark_bit; }
+  void unmark_outside(Tet_id t) { tets[t].v[1] &= ~mark_bit; }
 
   void clear()
   {
     vertices.clear();
-    tet_vertices.clear();
-    tet_neighbors.clear();
-    tet_flags.clear();
+    tets.clear();
     tet_sub_determinants.clear();
     free_tets.clear();
     live_tets = 0;
     ghost_tets = 0;
   }
 
+  // `slots` tetrahedron slots in all; new slots are free (marked) until written.
+  void resize_tets(std::size_t slots)
+  {
+    if(slots > max_tets)
+      throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^30 tetrahedra; "
+                              "define CGAL_FDT3_64_BIT_FACET_CODES for larger triangulations");
+    const std::size_t old = tets.size();
+    tets.resize(slots);
+    for(std::size_t t = old; t < slots; ++t) tets[t].v[0] = mark_bit;
+    if(with_sub_determinants) tet_sub_determinants.resize(4 * slots);
+  }
+
   // Room for `n` more tetrahedron slots without reallocation.
   void reserve_tets(std::size_t n)
   {
-    const std::size_t total = number_of_slots() + n;
-    tet_vertices.reserve(4 * total);
-    tet_neighbors.reserve(4 * total);
-    tet_flags.reserve(total);
+    const std::size_t total = std::min<std::size_t>(number_of_slots() + n, max_tets);
+    tets.reserve(total);
     if(with_sub_determinants) tet_sub_determinants.reserve(4 * total);
   }
 
@@ -227,43 +268,8 @@ struct Flat_storage
       return t;
     }
     const Tet_id t = number_of_slots();
-    tet_vertices.resize(4 * (t + 1));
-    tet_neighbors.resize(4 * (t + 1));
-    tet_flags.resize(t + 1);
-    if(with_sub_determinants) tet_sub_determinants.resize(4 * (t + 1));
+    resize_tets(t + 1);
     return t;
-  }
-
-  // Moves the live tetrahedra into the lowest slots, keeping their relative
-  // order, so that the arrays hold no holes (after bulk insertion).
-  void compact()
-  {
-    const std::size_t slots = number_of_slots();
-    if(live_tets == slots) {
-      free_tets.clear();
-      return;
-    }
-    std::vector<Tet_id> new_index(slots);
-    Tet_id next = 0;
-    for(Tet_id t = 0; t < slots; ++t)
-      new_index[t] = is_live(t) ? next++ : Tet_id(-1);
-    for(Tet_id t = 0; t < slots; ++t) {
-      if(!is_live(t)) continue;
-      const Tet_id u = new_index[t];
-      for(int i = 0; i < 4; ++i) {
-        const Facet_code code = tet_neighbors[4 * t + i];
-        tet_vertices[4 * u + i] = tet_vertices[4 * t + i];
-        tet_neighbors[4 * u + i] = facet_code(new_index[tet_of(code)], facet_of(code));
-        if(with_sub_determinants) tet_sub_determinants[4 * u + i] = tet_sub_determinants[4 * t + i];
-      }
-      tet_flags[u] = Tet_flags::none;
-    }
-    tet_vertices.resize(4 * next);
-    tet_neighbors.resize(4 * next);
-    tet_flags.resize(next);
-    if(with_sub_determinants) tet_sub_determinants.resize(4 * next);
-    free_tets.clear();
-    CGAL_assertion(next == live_tets);
   }
 };
 

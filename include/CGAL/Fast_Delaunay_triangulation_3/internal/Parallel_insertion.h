@@ -244,7 +244,7 @@ private:
       m_.ghost_tets += scratches[j].ghost_delta;
       stats.add(scratches[j].stats);
       for(Tet_id t = next_fresh[j]; t < fresh_begin[j + 1]; ++t) {
-        m_.tet_flags[t] = Tet_flags::deleted;
+        m_.mark_free(t);
         if(j + 1 < partitions) m_.free_tets.push_back(t);
       }
       m_.free_tets.insert(m_.free_tets.end(), free_lists[j].begin(), free_lists[j].end());
@@ -256,10 +256,7 @@ private:
 
   void resize_cell_arrays(std::size_t slots)
   {
-    m_.tet_vertices.resize(4 * slots);
-    m_.tet_neighbors.resize(4 * slots);
-    m_.tet_flags.resize(slots);
-    if(m_.with_sub_determinants) m_.tet_sub_determinants.resize(4 * slots);
+    m_.resize_tets(slots);
   }
 
   // A live tetrahedron owned by each partition (no_tet if none), found by one

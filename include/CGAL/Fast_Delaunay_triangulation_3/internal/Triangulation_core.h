@@ -287,23 +287,20 @@ private:
                    mesh.point(simplex[3])) < 0)
       std::swap(simplex[2], simplex[3]);
     mesh.free_tets.clear();
-    mesh.tet_vertices.clear();
-    mesh.tet_neighbors.clear();
-    mesh.tet_flags.clear();
+    mesh.tets.clear();
     mesh.tet_sub_determinants.clear();
     Tet_id tets[5];
     for(Tet_id& t : tets) t = mesh.new_tet();
-    for(int i = 0; i < 4; ++i) mesh.tet_vertices[i] = simplex[i];
+    for(int i = 0; i < 4; ++i) mesh.vertex_ids(0)[i] = simplex[i];
     // The ghost on facet f sees that facet from outside: (a, b, c, ghost) with
     // (a, b, c) = facet_vertex[f], an even permutation of the reversed facet.
     for(int f = 0; f < 4; ++f) {
-      Vertex_id* g = &mesh.tet_vertices[4 * (f + 1)];
+      Vertex_id* g = mesh.vertex_ids(f + 1);
       for(int k = 0; k < 3; ++k) g[k] = simplex[facet_vertex[f][k]];
       g[3] = ghost_vertex;
     }
     for(int t = 0; t < 5; ++t) {
-      mesh.tet_flags[t] = Tet_flags::none;
-      for(int i = 0; i < 4; ++i) mesh.tet_neighbors[4 * t + i] = match_facet(t, i);
+      for(int i = 0; i < 4; ++i) mesh.tets[t].n[i] = match_facet(t, i);
       if(mesh.with_sub_determinants) update_sub_determinants(mesh, t);
     }
     mesh.live_tets = 5;
@@ -316,14 +313,14 @@ private:
   {
     Vertex_id mine[3];
     for(int k = 0, j = 0; k < 4; ++k)
-      if(k != i) mine[j++] = mesh.tet_vertices[4 * t + k];
+      if(k != i) mine[j++] = mesh.vertex(t, k);
     std::sort(mine, mine + 3);
     for(int u = 0; u < 5; ++u) {
       if(u == t) continue;
       for(int j = 0; j < 4; ++j) {
         Vertex_id other[3];
         for(int k = 0, l = 0; k < 4; ++k)
-          if(k != j) other[l++] = mesh.tet_vertices[4 * u + k];
+          if(k != j) other[l++] = mesh.vertex(u, k);
         std::sort(other, other + 3);
         if(std::equal(mine, mine + 3, other)) return facet_code(u, j);
       }
@@ -373,7 +370,7 @@ private:
       for(Tet_id t = 0; t < mesh.number_of_slots(); ++t) {
         if(!mesh.is_live(t)) continue;
         for(int i = 0; i < 4; ++i) {
-          Vertex_id& v = mesh.tet_vertices[4 * t + i];
+          Vertex_id& v = mesh.vertex_ids(t)[i];
           if(v != ghost_vertex && v >= first_new) v = new_id[v - first_new];
         }
       }
@@ -419,7 +416,7 @@ inline bool Triangulation_core::is_valid(std::string* why) const
       const Facet_code code = m.neighbor_code(t, i);
       if(tet_of(code) >= m.number_of_slots() || !m.is_live(tet_of(code)))
         return fail(at + "neighbour is not a live tetrahedron");
-      if(m.tet_neighbors[code] != facet_code(t, i)) return fail(at + "asymmetric adjacency");
+      if(m.neighbor_code(code) != facet_code(t, i)) return fail(at + "asymmetric adjacency");
       // Same facet, seen reversed from the other side.
       Vertex_id mine[3], other[3];
       for(int k = 0, a = 0, b = 0; k < 4; ++k) {
