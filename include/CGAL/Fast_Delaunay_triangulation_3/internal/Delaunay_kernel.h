@@ -301,6 +301,7 @@ private:
     s_.boundary_vertices.clear();
     cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
     m_.mark_free(start);
+    prefetch_neighbors(start);
     cavity.push_back(start);
 
     for(std::size_t k = 0; k < cavity.size(); ++k) {
@@ -319,6 +320,7 @@ private:
               return false;
             }
             m_.mark_free(u);
+            prefetch_neighbors(u);
             cavity.push_back(u);
             cavity_ghosts_ += m_.is_ghost(u) ? 1 : 0;
             continue;
@@ -331,6 +333,15 @@ private:
     clear_outside_flags();
     s_.stats.cavity_tets += cavity.size();
     return true;
+  }
+
+  // A tetrahedron joins the cavity queue long before it is popped, and its
+  // record (hence its neighbour codes) is in cache right now: fetching the
+  // neighbours' records here hides the miss the pop would take.
+  void prefetch_neighbors(Tet_id t) const
+  {
+    const Facet_code* n = m_.tets[t].n;
+    for(int f = 0; f < 4; ++f) __builtin_prefetch(&m_.tets[tet_of(n[f])]);
   }
 
   void clear_outside_flags()

@@ -268,7 +268,11 @@ struct Flat_storage
       return t;
     }
     const Tet_id t = number_of_slots();
-    resize_tets(t + 1);
+    if(t + 1 > max_tets || with_sub_determinants) {
+      resize_tets(t + 1);
+    } else {
+      tets.resize(t + 1); // written by the caller right away
+    }
     return t;
   }
 };
