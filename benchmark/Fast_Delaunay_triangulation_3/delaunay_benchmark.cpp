@@ -8,7 +8,7 @@
 // (round r: fast, cgal, cgal-par, ...) so that a drift of the machine hits them alike; the table shows medians.
 //
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all] [--engines fast,cgal,cgal-par,fast-par]
-//                           [--rounds 3] [--threads 2[,1...]] [--phases] [--csv]
+//                           [--rounds 3] [--threads 2[,1...]] [--phases] [--verbose] [--csv]
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 
@@ -87,6 +87,15 @@ Phase_report phase_report_of(const Insertion_report& r)
   return p;
 }
 
+// The paper's Table 2: one row per attempt of the partitioned insertion.
+struct Attempt_report
+{
+  std::uint64_t points = 0, inserted = 0, mesh_vertices = 0;
+  int partitions = 0;
+  double seconds = 0;
+};
+constexpr int max_attempt_rows = 48;
+
 // What one run of an engine sends back. Trivially copyable: it crosses the pipe from the child as bytes.
 struct Engine_result
 {
@@ -94,6 +103,9 @@ struct Engine_result
   std::uint64_t finite_cells = 0;
   bool has_phases = false;
   Phase_report phases;               // when has_phases
+  int attempt_rows = 0;              // rows of `attempts` filled (--verbose runs of fast-par)
+  int attempts_left_out = 0;         // rows beyond max_attempt_rows
+  Attempt_report attempts[max_attempt_rows];
 };
 static_assert(std::is_trivially_copyable<Engine_result>::value, "Engine_result is sent through a pipe");
 
@@ -164,6 +176,29 @@ Engine_result run_fast_parallel(const Points& points, int threads)
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   Fast_parallel_dt triangulation;
   return insert_and_count(triangulation, points);
+}
+
+// --verbose: one more run with exactly `threads` partitions (even beyond the cores, as the paper's Table 2 at
+// 8 threads), reporting every attempt of the partitioned insertion.
+Engine_result run_fast_parallel_with_attempts(const Points& points, int threads)
+{
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  Fast_parallel_dt triangulation;
+  triangulation.set_number_of_threads(threads);
+  Engine_result result = insert_and_count(triangulation, points);
+  for(const auto& round : triangulation.last_insertion_report().rounds) {
+    if(result.attempt_rows == max_attempt_rows) {
+      ++result.attempts_left_out;
+      continue;
+    }
+    Attempt_report& a = result.attempts[result.attempt_rows++];
+    a.points = round.points;
+    a.inserted = round.inserted;
+    a.mesh_vertices = round.mesh_vertices;
+    a.partitions = round.partitions;
+    a.seconds = round.seconds;
+  }
+  return result;
 }
 #endif
 
@@ -288,6 +323,7 @@ struct Options
   std::vector<int> threads = {2};
   int rounds = 3;
   bool phases = false;
+  bool verbose = false;
   bool csv = false;
 };
 
@@ -346,6 +382,8 @@ void print_usage(std::FILE* to)
                "  --rounds R      runs of every engine, interleaved; the table shows the median (default 3)\n"
                "  --threads LIST  thread counts of the parallel engines (default 2)\n"
                "  --phases        also print our per-phase breakdown (sort, init, walk, cavity, ball, other)\n"
+               "  --verbose       also print the attempts of our parallel engine (paper Table 2), one more run per\n"
+               "                  --threads value with exactly that many partitions\n"
                "  --csv           comma-separated output; comments start with '#'\n",
                join(engine_names(false)).c_str(), join(engine_names(true)).c_str());
 }
@@ -383,6 +421,8 @@ Options parse_options(int argc, char** argv)
         options.threads.push_back(static_cast<int>(parse_number(item, "--threads")));
     } else if(option == "--phases") {
       options.phases = true;
+    } else if(option == "--verbose") {
+      options.verbose = true;
     } else if(option == "--csv") {
       options.csv = true;
     } else if(option == "--help" || option == "-h") {
@@ -487,6 +527,8 @@ struct Row
   std::string error;
   Phase_report phases;
   bool has_phases = false;
+  std::vector<Attempt_report> attempts; // --verbose rows of fast-par
+  int attempts_left_out = 0;
 };
 
 std::vector<Row> rows_of(const Options& options)
@@ -515,6 +557,10 @@ void record(Row& row, const Child_report& report)
   if(report.result.has_phases) {
     row.has_phases = true;
     row.phases = report.result.phases;
+  }
+  if(report.result.attempt_rows > 0) {
+    row.attempts.assign(report.result.attempts, report.result.attempts + report.result.attempt_rows);
+    row.attempts_left_out = report.result.attempts_left_out;
   }
 }
 
@@ -557,6 +603,16 @@ Measurement measure(const Options& options, std::size_t n, const std::string& di
     record(row, run_in_child([&] { return run_fast_with_phases(points, 1); }));
     m.rows.push_back(row);
   }
+#ifdef CGAL_LINKED_WITH_TBB
+  if(options.verbose) {
+    static const Engine fast_with_attempts = {"fast-par", true, false, run_fast_parallel_with_attempts};
+    for(int threads : options.threads) {
+      Row row(&fast_with_attempts, threads, "fast-par+log");
+      record(row, run_in_child([&] { return run_fast_parallel_with_attempts(points, threads); }));
+      m.rows.push_back(row);
+    }
+  }
+#endif
   return m;
 }
 
@@ -636,6 +692,31 @@ void print_phases(const Row& row)
               with_commas(r.inserted).c_str(), with_commas(r.duplicates).c_str());
 }
 
+// The paper's Table 2 for one fast-par+log run.
+void print_attempts(const Row& row)
+{
+  std::printf("\nfast-par attempts with %d partitions (paper Table 2; 1 partition = sequential finish)\n", row.threads);
+  std::printf("%8s %12s %12s %8s %11s %14s %9s\n", "attempt", "points", "inserted", "ratio", "partitions",
+              "mesh vertices", "seconds");
+  std::uint64_t total = 0;
+  std::vector<std::uint64_t> by_partitions(256, 0);
+  for(std::size_t i = 0; i < row.attempts.size(); ++i) {
+    const Attempt_report& a = row.attempts[i];
+    std::printf("%8zu %12s %12s %7.1f%% %11d %14s %9.3f\n", i + 1, with_commas(a.points).c_str(),
+                with_commas(a.inserted).c_str(), a.points ? 100.0 * double(a.inserted) / double(a.points) : 0.0,
+                a.partitions, with_commas(a.mesh_vertices).c_str(), a.seconds);
+    total += a.inserted;
+    by_partitions[static_cast<std::size_t>(std::min(a.partitions, 255))] += a.inserted;
+  }
+  if(row.attempts_left_out > 0) std::printf("(%d more attempts not shown)\n", row.attempts_left_out);
+  std::printf("inserted by:");
+  for(int k = 255; k >= 1; --k)
+    if(by_partitions[k] > 0)
+      std::printf(" %d partition%s %.1f%%", k, k == 1 ? "" : "s",
+                  total ? 100.0 * double(by_partitions[k]) / double(total) : 0.0);
+  std::printf("\n");
+}
+
 // Warnings about cell counts: every engine must find CGAL's finite cells (the first engine's when CGAL did not
 // run), in every round.
 std::vector<std::string> cell_count_warnings(const Measurement& m)
@@ -679,6 +760,8 @@ void print_table(const Measurement& m, int rounds)
   for(const std::string& warning : cell_count_warnings(m)) std::printf("WARNING: %s\n", warning.c_str());
   for(const Row& row : m.rows)
     if(row.has_phases) print_phases(row);
+  for(const Row& row : m.rows)
+    if(!row.attempts.empty()) print_attempts(row);
   std::fflush(stdout);
 }
 
