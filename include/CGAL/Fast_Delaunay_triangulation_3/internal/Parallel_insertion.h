@@ -78,6 +78,7 @@ class Partitioned_insertion
 {
 public:
   static constexpr std::size_t min_points_per_partition = 3000;
+  static constexpr std::size_t retry_mesh_ratio = 32;
 
   Partitioned_insertion(Flat_storage& mesh, const Static_filter& filter,
                         const Sub_determinant_filter& sub_filter, const double box_lo[3],
@@ -102,6 +103,10 @@ public:
     while(!points.empty()) {
       while(partitions > 1 && points.size() < min_points_per_partition * std::size_t(partitions))
         partitions /= 2;
+      // A retry pays a fixed price proportional to the mesh (the partition of
+      // every mesh vertex is recomputed) and gains at most a share of its few
+      // points' insertion time: past this ratio the sequential finish is faster.
+      if(attempt > 0 && points.size() * retry_mesh_ratio < vertices_in_mesh_) partitions = 1;
       Partition_round row;
       row.points = points.size();
       row.partitions = partitions;
