@@ -15,6 +15,7 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_and_cell_infos.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -79,6 +80,10 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Cell_facade<Self> Cell;
   typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Vertex, Vertex_id> Vertex_handle;
   typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Cell, Tet_id> Cell_handle;
+  // Info of Triangulation_vertex_base_with_info_3 / Triangulation_cell_base_with_info_3
+  // in the data structure argument (void without): v->info(), c->info().
+  typedef typename Fast_Delaunay_triangulation_3_internal::Vertex_info_of<Tds_>::type Vertex_info;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Cell_info_of<Tds_>::type Cell_info;
   typedef std::pair<Cell_handle, int> Facet;
   typedef CGAL::Triple<Cell_handle, int, int> Edge;
 
@@ -285,13 +290,15 @@ public:
   bool is_parallel() const { return std::is_same<Concurrency_tag, Parallel_tag>::value; }
 
   Fast_Delaunay_triangulation_3(const Self& other)
-      : traits_(other.traits_), core_(other.core_), lock_ds_(other.lock_ds_), threads_(other.threads_)
+      : traits_(other.traits_), core_(other.core_), lock_ds_(other.lock_ds_), threads_(other.threads_),
+        vertex_infos_(other.vertex_infos_), cell_infos_(other.cell_infos_)
   {}
   Fast_Delaunay_triangulation_3(Self&& other) noexcept
       : traits_(std::move(other.traits_)), core_(std::move(other.core_)), lock_ds_(other.lock_ds_),
-        threads_(other.threads_)
+        threads_(other.threads_), vertex_infos_(std::move(other.vertex_infos_)),
+        cell_infos_(std::move(other.cell_infos_))
   {
-    other.core_.clear();
+    other.clear();
   }
   Self& operator=(const Self& other)
   {
@@ -300,6 +307,8 @@ public:
       core_ = other.core_;
       lock_ds_ = other.lock_ds_;
       threads_ = other.threads_;
+      vertex_infos_ = other.vertex_infos_;
+      cell_infos_ = other.cell_infos_;
       incident_cells_.clear();
     }
     return *this;
@@ -311,9 +320,10 @@ public:
       core_ = std::move(other.core_);
       lock_ds_ = other.lock_ds_;
       threads_ = other.threads_;
-      other.core_.clear();
+      vertex_infos_ = std::move(other.vertex_infos_);
+      cell_infos_ = std::move(other.cell_infos_);
       incident_cells_.clear();
-      other.incident_cells_.clear();
+      other.clear();
     }
     return *this;
   }
@@ -323,12 +333,16 @@ public:
     std::swap(core_, other.core_);
     std::swap(lock_ds_, other.lock_ds_);
     std::swap(threads_, other.threads_);
+    std::swap(vertex_infos_, other.vertex_infos_);
+    std::swap(cell_infos_, other.cell_infos_);
     incident_cells_.clear();
     other.incident_cells_.clear();
   }
   void clear()
   {
     core_.clear();
+    vertex_infos_.clear();
+    cell_infos_.clear();
     incident_cells_.clear();
   }
 
@@ -354,19 +368,32 @@ public:
   // ---------------------------------------------------------------- insertion
   // Inserts the points of [first, last); returns the number of new vertices.
   // A point with a NaN or infinite coordinate throws std::invalid_argument
-  // before anything changes.  Duplicates are stored once.
+  // before anything changes.  Duplicates are stored once.  With vertex infos,
+  // the range may also hold std::pair<Point, Info> or (Point, Info) tuples
+  // (boost::zip_iterator): every vertex gets the info of the last element
+  // equal to it in input order (CGAL overwrites too, in its spatial-sort
+  // order), a vertex already present included.  Cells of the re-triangulated
+  // region are new: their infos are Info(), as in CGAL.
   template <class InputIterator>
   std::ptrdiff_t insert(InputIterator first, InputIterator last,
                         typename std::enable_if<!std::is_convertible<InputIterator, Cell_handle>::value>::type* = nullptr)
   {
+    typedef typename std::iterator_traits<InputIterator>::value_type Value;
     std::vector<double> xyz;
-    append_coordinates(first, last, xyz,
-                       typename std::iterator_traits<InputIterator>::iterator_category());
-    const std::size_t n = xyz.size() / 3;
-    Core::check_finite(xyz.data(), n);
-    incident_cells_.clear();
-    core_.partitions = partitions_for_insertion();
-    return static_cast<std::ptrdiff_t>(core_.insert(xyz.data(), n, nullptr));
+    if constexpr(std::is_convertible<Value, Point>::value) {
+      append_coordinates(first, last, xyz,
+                         typename std::iterator_traits<InputIterator>::iterator_category());
+      return insert_coordinates(xyz, nullptr);
+    } else {
+      static_assert(!std::is_void<Vertex_info>::value,
+                    "points with infos need a vertex base with info (Triangulation_vertex_base_with_info_3)");
+      std::vector<Vertex_info> infos;
+      Fast_Delaunay_triangulation_3_internal::read_points_and_infos(first, last, xyz, infos);
+      std::vector<Vertex_id> vertex_of_input;
+      const std::ptrdiff_t added = insert_coordinates(xyz, &vertex_of_input);
+      vertex_infos_.assign(vertex_of_input, infos);
+      return added;
+    }
   }
 
   Vertex_handle insert(const Point& p)
@@ -375,7 +402,9 @@ public:
     Core::check_finite(xyz, 1);
     incident_cells_.clear();
     core_.partitions = 1; // one point: no partitioned round to run
-    return Vertex_handle(this, core_.insert_one(xyz));
+    const Vertex_id v = core_.insert_one(xyz);
+    vertex_infos_.resize(number_of_vertices());
+    return Vertex_handle(this, v);
   }
   Vertex_handle insert(const Point& p, Cell_handle) { return insert(p); }
   Vertex_handle insert(const Point& p, Vertex_handle) { return insert(p); }
@@ -538,6 +567,11 @@ public:
     const double* p = core_.mesh.point(v);
     return Point(p[0], p[1], p[2]);
   }
+  // Only with infos (see Vertex_and_cell_infos.h).
+  template <class Info = Vertex_info>
+  Info& vertex_info(Vertex_id v) const { return vertex_infos_.at(v); }
+  template <class Info = Cell_info>
+  Info& cell_info(Tet_id c) const { return cell_infos_.at(core_.mesh, c); }
   Cell_handle incident_cell_of(Vertex_id v) const
   {
     if(dimension() < 3) return Cell_handle();
@@ -588,6 +622,17 @@ private:
 #endif
   }
 
+  std::ptrdiff_t insert_coordinates(const std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input)
+  {
+    const std::size_t n = xyz.size() / 3;
+    Core::check_finite(xyz.data(), n);
+    incident_cells_.clear();
+    core_.partitions = partitions_for_insertion();
+    const std::size_t added = core_.insert(xyz.data(), n, vertex_of_input);
+    vertex_infos_.resize(number_of_vertices());
+    return static_cast<std::ptrdiff_t>(added);
+  }
+
   std::size_t cell_slots() const { return dimension() < 3 ? 0 : core_.mesh.number_of_slots(); }
   Vertex_id vertex_count() const { return static_cast<Vertex_id>(number_of_vertices()); }
 
@@ -630,6 +675,8 @@ private:
   Lock_data_structure* lock_ds_ = nullptr;
   int threads_ = std::is_same<Concurrency_tag, Parallel_tag>::value ? 0 : 1;
   mutable std::vector<Tet_id> incident_cells_; // lazily built v->cell() cache
+  Fast_Delaunay_triangulation_3_internal::Vertex_infos<Vertex_info> vertex_infos_;
+  Fast_Delaunay_triangulation_3_internal::Cell_infos<Cell_info> cell_infos_;
 };
 
 } // namespace CGAL
