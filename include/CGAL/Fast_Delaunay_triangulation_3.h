@@ -13,7 +13,9 @@
 #ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_H
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_and_cell_infos.h>
 
@@ -260,6 +262,10 @@ public:
 
   typedef Fast_Delaunay_triangulation_3_internal::Insertion_report Insertion_report;
 
+  // Around an edge, in CGAL's direction.
+  typedef Fast_Delaunay_triangulation_3_internal::Cell_circulator_around_edge<Self> Cell_circulator;
+  typedef Fast_Delaunay_triangulation_3_internal::Facet_circulator_around_edge<Self> Facet_circulator;
+
   // ---------------------------------------------------------------- creation
   explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits(),
                                          Lock_data_structure* lock_ds = nullptr)
@@ -482,6 +488,222 @@ public:
   {
     return Tetrahedron(point(c, 0), point(c, 1), point(c, 2), point(c, 3));
   }
+  // Facet i of c oriented as CGAL orients it (positive seen from c's inside).
+  Triangle triangle(Cell_handle c, int i) const
+  {
+    CGAL_precondition(!is_infinite(c, i));
+    if((i & 1) == 0) return Triangle(point(c, (i + 2) & 3), point(c, (i + 1) & 3), point(c, (i + 3) & 3));
+    return Triangle(point(c, (i + 1) & 3), point(c, (i + 2) & 3), point(c, (i + 3) & 3));
+  }
+  Triangle triangle(const Facet& f) const { return triangle(f.first, f.second); }
+  Segment segment(Cell_handle c, int i, int j) const
+  {
+    CGAL_precondition(!is_infinite(c, i, j));
+    return Segment(point(c, i), point(c, j));
+  }
+  Segment segment(const Edge& e) const { return segment(e.first, e.second, e.third); }
+
+  // ---------------------------------------------------------------- point location
+  // Dimension 3 only (precondition): below it this package stores no cells.
+  // CGAL's semantics: a point on the hull boundary is in a finite cell; one
+  // outside is in an infinite cell whose finite facet sees it, li being the
+  // infinite vertex.  The cell found may differ from CGAL's when several
+  // qualify (a point on a facet, an edge or a vertex); lt never does.
+  Cell_handle locate(const Point& p, Locate_type& lt, int& li, int& lj, Cell_handle start = Cell_handle(),
+                     bool* could_lock_zone = nullptr) const
+  {
+    CGAL_precondition(dimension() == 3);
+    if(could_lock_zone) *could_lock_zone = true;
+    const double q[3] = {p.x(), p.y(), p.z()};
+    const Fast_Delaunay_triangulation_3_internal::Location loc =
+        Fast_Delaunay_triangulation_3_internal::locate(core_.mesh, start ? start->id() : Tet_id(-1), q);
+    lt = static_cast<Locate_type>(loc.type);
+    if(loc.li >= 0) li = loc.li;
+    if(loc.lj >= 0) lj = loc.lj;
+    return Cell_handle(this, loc.cell);
+  }
+  Cell_handle locate(const Point& p, Cell_handle start = Cell_handle(), bool* could_lock_zone = nullptr) const
+  {
+    Locate_type lt;
+    int li, lj;
+    return locate(p, lt, li, lj, start, could_lock_zone);
+  }
+  Cell_handle locate(const Point& p, Locate_type& lt, int& li, int& lj, Vertex_handle hint,
+                     bool* could_lock_zone = nullptr) const
+  {
+    return locate(p, lt, li, lj, hint == Vertex_handle() ? Cell_handle() : hint->cell(), could_lock_zone);
+  }
+  Cell_handle locate(const Point& p, Vertex_handle hint, bool* could_lock_zone = nullptr) const
+  {
+    return locate(p, hint == Vertex_handle() ? Cell_handle() : hint->cell(), could_lock_zone);
+  }
+  // The exact walk is cheap enough here (filtered predicates): the cell of locate().
+  Cell_handle inexact_locate(const Point& p, Cell_handle start = Cell_handle(), int = 2500,
+                             bool* could_lock_zone = nullptr) const
+  {
+    return locate(p, start, could_lock_zone);
+  }
+  Bounded_side side_of_cell(const Point& p, Cell_handle c, Locate_type& lt, int& i, int& j) const
+  {
+    CGAL_precondition(dimension() == 3);
+    Fast_Delaunay_triangulation_3_internal::Location_type type;
+    const Bounded_side side =
+        Fast_Delaunay_triangulation_3_internal::side_of_cell(traits_, core_.mesh, c->id(), p, type, i, j);
+    lt = static_cast<Locate_type>(type);
+    return side;
+  }
+  Bounded_side side_of_sphere(Cell_handle c, const Point& p, bool perturb = false) const
+  {
+    CGAL_precondition(dimension() == 3);
+    const double q[3] = {p.x(), p.y(), p.z()};
+    return static_cast<Bounded_side>(
+        Fast_Delaunay_triangulation_3_internal::side_of_sphere(core_.mesh, c->id(), q, perturb));
+  }
+  Vertex_handle nearest_vertex(const Point& p, Cell_handle start = Cell_handle()) const
+  {
+    return Fast_Delaunay_triangulation_3_internal::nearest_vertex(*this, p, start);
+  }
+  bool is_vertex(const Point& p, Vertex_handle& v) const
+  {
+    if(dimension() < 3) return false;
+    Locate_type lt;
+    int li, lj;
+    const Cell_handle c = locate(p, lt, li, lj);
+    if(lt != VERTEX) return false;
+    v = c->vertex(li);
+    return true;
+  }
+  bool is_vertex(Vertex_handle v) const
+  {
+    return v->triangulation() == this && (is_infinite(v) || v->id() < number_of_vertices());
+  }
+  bool is_cell(Cell_handle c) const
+  {
+    return dimension() == 3 && c->triangulation() == this && c->id() < core_.mesh.number_of_slots() &&
+           core_.mesh.is_live(c->id());
+  }
+  bool is_edge(Vertex_handle u, Vertex_handle v, Cell_handle& c, int& i, int& j) const
+  {
+    int index[2];
+    const Vertex_handle others[1] = {v};
+    if(dimension() < 3 || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+      return false;
+    i = index[0]; j = index[1];
+    return true;
+  }
+  bool is_facet(Vertex_handle u, Vertex_handle v, Vertex_handle w, Cell_handle& c, int& i, int& j, int& k) const
+  {
+    int index[3];
+    const Vertex_handle others[2] = {v, w};
+    if(dimension() < 3 || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+      return false;
+    i = index[0]; j = index[1]; k = index[2];
+    return true;
+  }
+  bool is_cell(Vertex_handle u, Vertex_handle v, Vertex_handle w, Vertex_handle t, Cell_handle& c, int& i, int& j,
+               int& k, int& l) const
+  {
+    int index[4];
+    const Vertex_handle others[3] = {v, w, t};
+    if(dimension() < 3 || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+      return false;
+    i = index[0]; j = index[1]; k = index[2]; l = index[3];
+    return true;
+  }
+  bool is_cell(Vertex_handle u, Vertex_handle v, Vertex_handle w, Vertex_handle t, Cell_handle& c) const
+  {
+    int i, j, k, l;
+    return is_cell(u, v, w, t, c, i, j, k, l);
+  }
+
+  // ---------------------------------------------------------------- adjacency (dimension 3)
+  template <class OutputIterator>
+  OutputIterator incident_cells(Vertex_handle v, OutputIterator out) const
+  {
+    return cells_around(v, out, false);
+  }
+  template <class OutputIterator>
+  OutputIterator finite_incident_cells(Vertex_handle v, OutputIterator out) const
+  {
+    return cells_around(v, out, true);
+  }
+  template <class OutputIterator>
+  OutputIterator incident_facets(Vertex_handle v, OutputIterator out) const { return facets_around(v, out, false); }
+  template <class OutputIterator>
+  OutputIterator finite_incident_facets(Vertex_handle v, OutputIterator out) const
+  {
+    return facets_around(v, out, true);
+  }
+  template <class OutputIterator>
+  OutputIterator incident_edges(Vertex_handle v, OutputIterator out) const { return edges_around(v, out, false); }
+  template <class OutputIterator>
+  OutputIterator finite_incident_edges(Vertex_handle v, OutputIterator out) const
+  {
+    return edges_around(v, out, true);
+  }
+  template <class OutputIterator>
+  OutputIterator adjacent_vertices(Vertex_handle v, OutputIterator out) const
+  {
+    return vertices_around(v, out, false);
+  }
+  template <class OutputIterator>
+  OutputIterator finite_adjacent_vertices(Vertex_handle v, OutputIterator out) const
+  {
+    return vertices_around(v, out, true);
+  }
+  template <class OutputIterator>
+  OutputIterator incident_vertices(Vertex_handle v, OutputIterator out) const { return adjacent_vertices(v, out); }
+  template <class OutputIterator>
+  OutputIterator finite_incident_vertices(Vertex_handle v, OutputIterator out) const
+  {
+    return finite_adjacent_vertices(v, out);
+  }
+  // Adjacent vertices, the infinite one included (CGAL's count).
+  size_type degree(Vertex_handle v) const
+  {
+    std::size_t n = 0;
+    vertices_around(v, Fast_Delaunay_triangulation_3_internal::Counting_output{&n}, false);
+    return n;
+  }
+
+  Cell_circulator incident_cells(Cell_handle c, int i, int j) const { return incident_cells(c, i, j, c); }
+  Cell_circulator incident_cells(const Edge& e) const { return incident_cells(e.first, e.second, e.third); }
+  Cell_circulator incident_cells(Cell_handle c, int i, int j, Cell_handle start) const
+  {
+    CGAL_precondition(dimension() == 3 && start->has_vertex(c->vertex(i)) && start->has_vertex(c->vertex(j)));
+    return Cell_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), start->id());
+  }
+  Cell_circulator incident_cells(const Edge& e, Cell_handle start) const
+  {
+    return incident_cells(e.first, e.second, e.third, start);
+  }
+  Facet_circulator incident_facets(Cell_handle c, int i, int j) const
+  {
+    CGAL_precondition(dimension() == 3);
+    return Facet_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), c->id());
+  }
+  Facet_circulator incident_facets(const Edge& e) const { return incident_facets(e.first, e.second, e.third); }
+  // Starting at facet f of start: from start if f is the facet that follows
+  // it around the edge, else from the cell on the other side of f.
+  Facet_circulator incident_facets(Cell_handle c, int i, int j, Cell_handle start, int f) const
+  {
+    CGAL_precondition(dimension() == 3);
+    const int si = start->index(c->vertex(i)), sj = start->index(c->vertex(j));
+    const Cell_handle from = f == next_around_edge(si, sj) ? start : start->neighbor(f);
+    return Facet_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), from->id());
+  }
+  Facet_circulator incident_facets(const Edge& e, Cell_handle start, int f) const
+  {
+    return incident_facets(e.first, e.second, e.third, start, f);
+  }
+  Facet_circulator incident_facets(Cell_handle c, int i, int j, const Facet& start) const
+  {
+    return incident_facets(c, i, j, start.first, start.second);
+  }
+  Facet_circulator incident_facets(const Edge& e, const Facet& start) const
+  {
+    return incident_facets(e.first, e.second, e.third, start.first, start.second);
+  }
 
   // ---------------------------------------------------------------- iterators
   All_cells_iterator all_cells_begin() const { return All_cells_iterator(this, 0, cell_slots()); }
@@ -620,6 +842,65 @@ private:
 #else
     return 1;
 #endif
+  }
+
+  void cells_around(Vertex_handle v, std::vector<Tet_id>& cells) const
+  {
+    CGAL_precondition(dimension() == 3);
+    Fast_Delaunay_triangulation_3_internal::cells_around_vertex(core_.mesh, incident_cell_of(v->id())->id(),
+                                                                v->id(), cells);
+  }
+  template <class OutputIterator>
+  OutputIterator cells_around(Vertex_handle v, OutputIterator out, bool finite_only) const
+  {
+    std::vector<Tet_id> cells;
+    cells_around(v, cells);
+    for(Tet_id t : cells)
+      if(!finite_only || !core_.mesh.is_ghost(t)) *out++ = Cell_handle(this, t);
+    return out;
+  }
+  // Each facet once, from the cell of smaller index.
+  template <class OutputIterator>
+  OutputIterator facets_around(Vertex_handle v, OutputIterator out, bool finite_only) const
+  {
+    const Flat_storage& m = core_.mesh;
+    std::vector<Tet_id> cells;
+    cells_around(v, cells);
+    for(Tet_id t : cells)
+      for(int f = 0; f < 4; ++f) {
+        if(m.vertex(t, f) == v->id() || m.neighbor(t, f) < t) continue;
+        if(finite_only && m.is_ghost(t) && f != 3) continue;
+        *out++ = Facet(Cell_handle(this, t), f);
+      }
+    return out;
+  }
+  template <class OutputIterator>
+  OutputIterator edges_around(Vertex_handle v, OutputIterator out, bool finite_only) const
+  {
+    const Flat_storage& m = core_.mesh;
+    std::vector<Tet_id> cells, cell_of_edge;
+    std::vector<Vertex_id> vertices;
+    cells_around(v, cells);
+    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(m, cells, v->id(), vertices, &cell_of_edge);
+    for(std::size_t k = 0; k < vertices.size(); ++k) {
+      if(finite_only && (vertices[k] == Fast_Delaunay_triangulation_3_internal::ghost_vertex || is_infinite(v)))
+        continue;
+      const Tet_id t = cell_of_edge[k];
+      *out++ = Edge(Cell_handle(this, t), Fast_Delaunay_triangulation_3_internal::index_of(m, t, v->id()),
+                    Fast_Delaunay_triangulation_3_internal::index_of(m, t, vertices[k]));
+    }
+    return out;
+  }
+  template <class OutputIterator>
+  OutputIterator vertices_around(Vertex_handle v, OutputIterator out, bool finite_only) const
+  {
+    std::vector<Tet_id> cells;
+    std::vector<Vertex_id> vertices;
+    cells_around(v, cells);
+    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(core_.mesh, cells, v->id(), vertices, nullptr);
+    for(Vertex_id w : vertices)
+      if(!finite_only || w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) *out++ = Vertex_handle(this, w);
+    return out;
   }
 
   std::ptrdiff_t insert_coordinates(const std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input)
