@@ -883,8 +883,9 @@ private:
     cells_around(v, cells);
     Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(m, cells, v->id(), vertices, &cell_of_edge);
     for(std::size_t k = 0; k < vertices.size(); ++k) {
-      if(finite_only && (vertices[k] == Fast_Delaunay_triangulation_3_internal::ghost_vertex || is_infinite(v)))
-        continue;
+      // Only the other vertex is tested: CGAL lists every edge of the
+      // infinite vertex among its "finite" incident edges too.
+      if(finite_only && vertices[k] == Fast_Delaunay_triangulation_3_internal::ghost_vertex) continue;
       const Tet_id t = cell_of_edge[k];
       *out++ = Edge(Cell_handle(this, t), Fast_Delaunay_triangulation_3_internal::index_of(m, t, v->id()),
                     Fast_Delaunay_triangulation_3_internal::index_of(m, t, vertices[k]));
