@@ -13,8 +13,11 @@
 #ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_H
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_and_cell_infos.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -79,6 +82,10 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Cell_facade<Self> Cell;
   typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Vertex, Vertex_id> Vertex_handle;
   typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Cell, Tet_id> Cell_handle;
+  // Info of Triangulation_vertex_base_with_info_3 / Triangulation_cell_base_with_info_3
+  // in the data structure argument (void without): v->info(), c->info().
+  typedef typename Fast_Delaunay_triangulation_3_internal::Vertex_info_of<Tds_>::type Vertex_info;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Cell_info_of<Tds_>::type Cell_info;
   typedef std::pair<Cell_handle, int> Facet;
   typedef CGAL::Triple<Cell_handle, int, int> Edge;
 
@@ -255,6 +262,10 @@ public:
 
   typedef Fast_Delaunay_triangulation_3_internal::Insertion_report Insertion_report;
 
+  // Around an edge, in CGAL's direction.
+  typedef Fast_Delaunay_triangulation_3_internal::Cell_circulator_around_edge<Self> Cell_circulator;
+  typedef Fast_Delaunay_triangulation_3_internal::Facet_circulator_around_edge<Self> Facet_circulator;
+
   // ---------------------------------------------------------------- creation
   explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits(),
                                          Lock_data_structure* lock_ds = nullptr)
@@ -285,13 +296,15 @@ public:
   bool is_parallel() const { return std::is_same<Concurrency_tag, Parallel_tag>::value; }
 
   Fast_Delaunay_triangulation_3(const Self& other)
-      : traits_(other.traits_), core_(other.core_), lock_ds_(other.lock_ds_), threads_(other.threads_)
+      : traits_(other.traits_), core_(other.core_), lock_ds_(other.lock_ds_), threads_(other.threads_),
+        vertex_infos_(other.vertex_infos_), cell_infos_(other.cell_infos_)
   {}
   Fast_Delaunay_triangulation_3(Self&& other) noexcept
       : traits_(std::move(other.traits_)), core_(std::move(other.core_)), lock_ds_(other.lock_ds_),
-        threads_(other.threads_)
+        threads_(other.threads_), vertex_infos_(std::move(other.vertex_infos_)),
+        cell_infos_(std::move(other.cell_infos_))
   {
-    other.core_.clear();
+    other.clear();
   }
   Self& operator=(const Self& other)
   {
@@ -300,6 +313,8 @@ public:
       core_ = other.core_;
       lock_ds_ = other.lock_ds_;
       threads_ = other.threads_;
+      vertex_infos_ = other.vertex_infos_;
+      cell_infos_ = other.cell_infos_;
       incident_cells_.clear();
     }
     return *this;
@@ -311,9 +326,10 @@ public:
       core_ = std::move(other.core_);
       lock_ds_ = other.lock_ds_;
       threads_ = other.threads_;
-      other.core_.clear();
+      vertex_infos_ = std::move(other.vertex_infos_);
+      cell_infos_ = std::move(other.cell_infos_);
       incident_cells_.clear();
-      other.incident_cells_.clear();
+      other.clear();
     }
     return *this;
   }
@@ -323,12 +339,16 @@ public:
     std::swap(core_, other.core_);
     std::swap(lock_ds_, other.lock_ds_);
     std::swap(threads_, other.threads_);
+    std::swap(vertex_infos_, other.vertex_infos_);
+    std::swap(cell_infos_, other.cell_infos_);
     incident_cells_.clear();
     other.incident_cells_.clear();
   }
   void clear()
   {
     core_.clear();
+    vertex_infos_.clear();
+    cell_infos_.clear();
     incident_cells_.clear();
   }
 
@@ -354,19 +374,32 @@ public:
   // ---------------------------------------------------------------- insertion
   // Inserts the points of [first, last); returns the number of new vertices.
   // A point with a NaN or infinite coordinate throws std::invalid_argument
-  // before anything changes.  Duplicates are stored once.
+  // before anything changes.  Duplicates are stored once.  With vertex infos,
+  // the range may also hold std::pair<Point, Info> or (Point, Info) tuples
+  // (boost::zip_iterator): every vertex gets the info of the last element
+  // equal to it in input order (CGAL overwrites too, in its spatial-sort
+  // order), a vertex already present included.  Cells of the re-triangulated
+  // region are new: their infos are Info(), as in CGAL.
   template <class InputIterator>
   std::ptrdiff_t insert(InputIterator first, InputIterator last,
                         typename std::enable_if<!std::is_convertible<InputIterator, Cell_handle>::value>::type* = nullptr)
   {
+    typedef typename std::iterator_traits<InputIterator>::value_type Value;
     std::vector<double> xyz;
-    append_coordinates(first, last, xyz,
-                       typename std::iterator_traits<InputIterator>::iterator_category());
-    const std::size_t n = xyz.size() / 3;
-    Core::check_finite(xyz.data(), n);
-    incident_cells_.clear();
-    core_.partitions = partitions_for_insertion();
-    return static_cast<std::ptrdiff_t>(core_.insert(xyz.data(), n, nullptr));
+    if constexpr(std::is_convertible<Value, Point>::value) {
+      append_coordinates(first, last, xyz,
+                         typename std::iterator_traits<InputIterator>::iterator_category());
+      return insert_coordinates(xyz, nullptr);
+    } else {
+      static_assert(!std::is_void<Vertex_info>::value,
+                    "points with infos need a vertex base with info (Triangulation_vertex_base_with_info_3)");
+      std::vector<Vertex_info> infos;
+      Fast_Delaunay_triangulation_3_internal::read_points_and_infos(first, last, xyz, infos);
+      std::vector<Vertex_id> vertex_of_input;
+      const std::ptrdiff_t added = insert_coordinates(xyz, &vertex_of_input);
+      vertex_infos_.assign(vertex_of_input, infos);
+      return added;
+    }
   }
 
   Vertex_handle insert(const Point& p)
@@ -375,7 +408,9 @@ public:
     Core::check_finite(xyz, 1);
     incident_cells_.clear();
     core_.partitions = 1; // one point: no partitioned round to run
-    return Vertex_handle(this, core_.insert_one(xyz));
+    const Vertex_id v = core_.insert_one(xyz);
+    vertex_infos_.resize(number_of_vertices());
+    return Vertex_handle(this, v);
   }
   Vertex_handle insert(const Point& p, Cell_handle) { return insert(p); }
   Vertex_handle insert(const Point& p, Vertex_handle) { return insert(p); }
@@ -452,6 +487,222 @@ public:
   Tetrahedron tetrahedron(Cell_handle c) const
   {
     return Tetrahedron(point(c, 0), point(c, 1), point(c, 2), point(c, 3));
+  }
+  // Facet i of c oriented as CGAL orients it (positive seen from c's inside).
+  Triangle triangle(Cell_handle c, int i) const
+  {
+    CGAL_precondition(!is_infinite(c, i));
+    if((i & 1) == 0) return Triangle(point(c, (i + 2) & 3), point(c, (i + 1) & 3), point(c, (i + 3) & 3));
+    return Triangle(point(c, (i + 1) & 3), point(c, (i + 2) & 3), point(c, (i + 3) & 3));
+  }
+  Triangle triangle(const Facet& f) const { return triangle(f.first, f.second); }
+  Segment segment(Cell_handle c, int i, int j) const
+  {
+    CGAL_precondition(!is_infinite(c, i, j));
+    return Segment(point(c, i), point(c, j));
+  }
+  Segment segment(const Edge& e) const { return segment(e.first, e.second, e.third); }
+
+  // ---------------------------------------------------------------- point location
+  // Dimension 3 only (precondition): below it this package stores no cells.
+  // CGAL's semantics: a point on the hull boundary is in a finite cell; one
+  // outside is in an infinite cell whose finite facet sees it, li being the
+  // infinite vertex.  The cell found may differ from CGAL's when several
+  // qualify (a point on a facet, an edge or a vertex); lt never does.
+  Cell_handle locate(const Point& p, Locate_type& lt, int& li, int& lj, Cell_handle start = Cell_handle(),
+                     bool* could_lock_zone = nullptr) const
+  {
+    CGAL_precondition(dimension() == 3);
+    if(could_lock_zone) *could_lock_zone = true;
+    const double q[3] = {p.x(), p.y(), p.z()};
+    const Fast_Delaunay_triangulation_3_internal::Location loc =
+        Fast_Delaunay_triangulation_3_internal::locate(core_.mesh, start ? start->id() : Tet_id(-1), q);
+    lt = static_cast<Locate_type>(loc.type);
+    if(loc.li >= 0) li = loc.li;
+    if(loc.lj >= 0) lj = loc.lj;
+    return Cell_handle(this, loc.cell);
+  }
+  Cell_handle locate(const Point& p, Cell_handle start = Cell_handle(), bool* could_lock_zone = nullptr) const
+  {
+    Locate_type lt;
+    int li, lj;
+    return locate(p, lt, li, lj, start, could_lock_zone);
+  }
+  Cell_handle locate(const Point& p, Locate_type& lt, int& li, int& lj, Vertex_handle hint,
+                     bool* could_lock_zone = nullptr) const
+  {
+    return locate(p, lt, li, lj, hint == Vertex_handle() ? Cell_handle() : hint->cell(), could_lock_zone);
+  }
+  Cell_handle locate(const Point& p, Vertex_handle hint, bool* could_lock_zone = nullptr) const
+  {
+    return locate(p, hint == Vertex_handle() ? Cell_handle() : hint->cell(), could_lock_zone);
+  }
+  // The exact walk is cheap enough here (filtered predicates): the cell of locate().
+  Cell_handle inexact_locate(const Point& p, Cell_handle start = Cell_handle(), int = 2500,
+                             bool* could_lock_zone = nullptr) const
+  {
+    return locate(p, start, could_lock_zone);
+  }
+  Bounded_side side_of_cell(const Point& p, Cell_handle c, Locate_type& lt, int& i, int& j) const
+  {
+    CGAL_precondition(dimension() == 3);
+    Fast_Delaunay_triangulation_3_internal::Location_type type;
+    const Bounded_side side =
+        Fast_Delaunay_triangulation_3_internal::side_of_cell(traits_, core_.mesh, c->id(), p, type, i, j);
+    lt = static_cast<Locate_type>(type);
+    return side;
+  }
+  Bounded_side side_of_sphere(Cell_handle c, const Point& p, bool perturb = false) const
+  {
+    CGAL_precondition(dimension() == 3);
+    const double q[3] = {p.x(), p.y(), p.z()};
+    return static_cast<Bounded_side>(
+        Fast_Delaunay_triangulation_3_internal::side_of_sphere(core_.mesh, c->id(), q, perturb));
+  }
+  Vertex_handle nearest_vertex(const Point& p, Cell_handle start = Cell_handle()) const
+  {
+    return Fast_Delaunay_triangulation_3_internal::nearest_vertex(*this, p, start);
+  }
+  bool is_vertex(const Point& p, Vertex_handle& v) const
+  {
+    if(dimension() < 3) return false;
+    Locate_type lt;
+    int li, lj;
+    const Cell_handle c = locate(p, lt, li, lj);
+    if(lt != VERTEX) return false;
+    v = c->vertex(li);
+    return true;
+  }
+  bool is_vertex(Vertex_handle v) const
+  {
+    return v->triangulation() == this && (is_infinite(v) || v->id() < number_of_vertices());
+  }
+  bool is_cell(Cell_handle c) const
+  {
+    return dimension() == 3 && c->triangulation() == this && c->id() < core_.mesh.number_of_slots() &&
+           core_.mesh.is_live(c->id());
+  }
+  bool is_edge(Vertex_handle u, Vertex_handle v, Cell_handle& c, int& i, int& j) const
+  {
+    int index[2];
+    const Vertex_handle others[1] = {v};
+    if(dimension() < 3 || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+      return false;
+    i = index[0]; j = index[1];
+    return true;
+  }
+  bool is_facet(Vertex_handle u, Vertex_handle v, Vertex_handle w, Cell_handle& c, int& i, int& j, int& k) const
+  {
+    int index[3];
+    const Vertex_handle others[2] = {v, w};
+    if(dimension() < 3 || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+      return false;
+    i = index[0]; j = index[1]; k = index[2];
+    return true;
+  }
+  bool is_cell(Vertex_handle u, Vertex_handle v, Vertex_handle w, Vertex_handle t, Cell_handle& c, int& i, int& j,
+               int& k, int& l) const
+  {
+    int index[4];
+    const Vertex_handle others[3] = {v, w, t};
+    if(dimension() < 3 || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+      return false;
+    i = index[0]; j = index[1]; k = index[2]; l = index[3];
+    return true;
+  }
+  bool is_cell(Vertex_handle u, Vertex_handle v, Vertex_handle w, Vertex_handle t, Cell_handle& c) const
+  {
+    int i, j, k, l;
+    return is_cell(u, v, w, t, c, i, j, k, l);
+  }
+
+  // ---------------------------------------------------------------- adjacency (dimension 3)
+  template <class OutputIterator>
+  OutputIterator incident_cells(Vertex_handle v, OutputIterator out) const
+  {
+    return cells_around(v, out, false);
+  }
+  template <class OutputIterator>
+  OutputIterator finite_incident_cells(Vertex_handle v, OutputIterator out) const
+  {
+    return cells_around(v, out, true);
+  }
+  template <class OutputIterator>
+  OutputIterator incident_facets(Vertex_handle v, OutputIterator out) const { return facets_around(v, out, false); }
+  template <class OutputIterator>
+  OutputIterator finite_incident_facets(Vertex_handle v, OutputIterator out) const
+  {
+    return facets_around(v, out, true);
+  }
+  template <class OutputIterator>
+  OutputIterator incident_edges(Vertex_handle v, OutputIterator out) const { return edges_around(v, out, false); }
+  template <class OutputIterator>
+  OutputIterator finite_incident_edges(Vertex_handle v, OutputIterator out) const
+  {
+    return edges_around(v, out, true);
+  }
+  template <class OutputIterator>
+  OutputIterator adjacent_vertices(Vertex_handle v, OutputIterator out) const
+  {
+    return vertices_around(v, out, false);
+  }
+  template <class OutputIterator>
+  OutputIterator finite_adjacent_vertices(Vertex_handle v, OutputIterator out) const
+  {
+    return vertices_around(v, out, true);
+  }
+  template <class OutputIterator>
+  OutputIterator incident_vertices(Vertex_handle v, OutputIterator out) const { return adjacent_vertices(v, out); }
+  template <class OutputIterator>
+  OutputIterator finite_incident_vertices(Vertex_handle v, OutputIterator out) const
+  {
+    return finite_adjacent_vertices(v, out);
+  }
+  // Adjacent vertices, the infinite one included (CGAL's count).
+  size_type degree(Vertex_handle v) const
+  {
+    std::size_t n = 0;
+    vertices_around(v, Fast_Delaunay_triangulation_3_internal::Counting_output{&n}, false);
+    return n;
+  }
+
+  Cell_circulator incident_cells(Cell_handle c, int i, int j) const { return incident_cells(c, i, j, c); }
+  Cell_circulator incident_cells(const Edge& e) const { return incident_cells(e.first, e.second, e.third); }
+  Cell_circulator incident_cells(Cell_handle c, int i, int j, Cell_handle start) const
+  {
+    CGAL_precondition(dimension() == 3 && start->has_vertex(c->vertex(i)) && start->has_vertex(c->vertex(j)));
+    return Cell_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), start->id());
+  }
+  Cell_circulator incident_cells(const Edge& e, Cell_handle start) const
+  {
+    return incident_cells(e.first, e.second, e.third, start);
+  }
+  Facet_circulator incident_facets(Cell_handle c, int i, int j) const
+  {
+    CGAL_precondition(dimension() == 3);
+    return Facet_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), c->id());
+  }
+  Facet_circulator incident_facets(const Edge& e) const { return incident_facets(e.first, e.second, e.third); }
+  // Starting at facet f of start: from start if f is the facet that follows
+  // it around the edge, else from the cell on the other side of f.
+  Facet_circulator incident_facets(Cell_handle c, int i, int j, Cell_handle start, int f) const
+  {
+    CGAL_precondition(dimension() == 3);
+    const int si = start->index(c->vertex(i)), sj = start->index(c->vertex(j));
+    const Cell_handle from = f == next_around_edge(si, sj) ? start : start->neighbor(f);
+    return Facet_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), from->id());
+  }
+  Facet_circulator incident_facets(const Edge& e, Cell_handle start, int f) const
+  {
+    return incident_facets(e.first, e.second, e.third, start, f);
+  }
+  Facet_circulator incident_facets(Cell_handle c, int i, int j, const Facet& start) const
+  {
+    return incident_facets(c, i, j, start.first, start.second);
+  }
+  Facet_circulator incident_facets(const Edge& e, const Facet& start) const
+  {
+    return incident_facets(e.first, e.second, e.third, start.first, start.second);
   }
 
   // ---------------------------------------------------------------- iterators
@@ -538,6 +789,11 @@ public:
     const double* p = core_.mesh.point(v);
     return Point(p[0], p[1], p[2]);
   }
+  // Only with infos (see Vertex_and_cell_infos.h).
+  template <class Info = Vertex_info>
+  Info& vertex_info(Vertex_id v) const { return vertex_infos_.at(v); }
+  template <class Info = Cell_info>
+  Info& cell_info(Tet_id c) const { return cell_infos_.at(core_.mesh, c); }
   Cell_handle incident_cell_of(Vertex_id v) const
   {
     if(dimension() < 3) return Cell_handle();
@@ -588,6 +844,77 @@ private:
 #endif
   }
 
+  void cells_around(Vertex_handle v, std::vector<Tet_id>& cells) const
+  {
+    CGAL_precondition(dimension() == 3);
+    Fast_Delaunay_triangulation_3_internal::cells_around_vertex(core_.mesh, incident_cell_of(v->id())->id(),
+                                                                v->id(), cells);
+  }
+  template <class OutputIterator>
+  OutputIterator cells_around(Vertex_handle v, OutputIterator out, bool finite_only) const
+  {
+    std::vector<Tet_id> cells;
+    cells_around(v, cells);
+    for(Tet_id t : cells)
+      if(!finite_only || !core_.mesh.is_ghost(t)) *out++ = Cell_handle(this, t);
+    return out;
+  }
+  // Each facet once, from the cell of smaller index.
+  template <class OutputIterator>
+  OutputIterator facets_around(Vertex_handle v, OutputIterator out, bool finite_only) const
+  {
+    const Flat_storage& m = core_.mesh;
+    std::vector<Tet_id> cells;
+    cells_around(v, cells);
+    for(Tet_id t : cells)
+      for(int f = 0; f < 4; ++f) {
+        if(m.vertex(t, f) == v->id() || m.neighbor(t, f) < t) continue;
+        if(finite_only && m.is_ghost(t) && f != 3) continue;
+        *out++ = Facet(Cell_handle(this, t), f);
+      }
+    return out;
+  }
+  template <class OutputIterator>
+  OutputIterator edges_around(Vertex_handle v, OutputIterator out, bool finite_only) const
+  {
+    const Flat_storage& m = core_.mesh;
+    std::vector<Tet_id> cells, cell_of_edge;
+    std::vector<Vertex_id> vertices;
+    cells_around(v, cells);
+    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(m, cells, v->id(), vertices, &cell_of_edge);
+    for(std::size_t k = 0; k < vertices.size(); ++k) {
+      // Only the other vertex is tested: CGAL lists every edge of the
+      // infinite vertex among its "finite" incident edges too.
+      if(finite_only && vertices[k] == Fast_Delaunay_triangulation_3_internal::ghost_vertex) continue;
+      const Tet_id t = cell_of_edge[k];
+      *out++ = Edge(Cell_handle(this, t), Fast_Delaunay_triangulation_3_internal::index_of(m, t, v->id()),
+                    Fast_Delaunay_triangulation_3_internal::index_of(m, t, vertices[k]));
+    }
+    return out;
+  }
+  template <class OutputIterator>
+  OutputIterator vertices_around(Vertex_handle v, OutputIterator out, bool finite_only) const
+  {
+    std::vector<Tet_id> cells;
+    std::vector<Vertex_id> vertices;
+    cells_around(v, cells);
+    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(core_.mesh, cells, v->id(), vertices, nullptr);
+    for(Vertex_id w : vertices)
+      if(!finite_only || w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) *out++ = Vertex_handle(this, w);
+    return out;
+  }
+
+  std::ptrdiff_t insert_coordinates(const std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input)
+  {
+    const std::size_t n = xyz.size() / 3;
+    Core::check_finite(xyz.data(), n);
+    incident_cells_.clear();
+    core_.partitions = partitions_for_insertion();
+    const std::size_t added = core_.insert(xyz.data(), n, vertex_of_input);
+    vertex_infos_.resize(number_of_vertices());
+    return static_cast<std::ptrdiff_t>(added);
+  }
+
   std::size_t cell_slots() const { return dimension() < 3 ? 0 : core_.mesh.number_of_slots(); }
   Vertex_id vertex_count() const { return static_cast<Vertex_id>(number_of_vertices()); }
 
@@ -630,6 +957,8 @@ private:
   Lock_data_structure* lock_ds_ = nullptr;
   int threads_ = std::is_same<Concurrency_tag, Parallel_tag>::value ? 0 : 1;
   mutable std::vector<Tet_id> incident_cells_; // lazily built v->cell() cache
+  Fast_Delaunay_triangulation_3_internal::Vertex_infos<Vertex_info> vertex_infos_;
+  Fast_Delaunay_triangulation_3_internal::Cell_infos<Cell_info> cell_infos_;
 };
 
 } // namespace CGAL

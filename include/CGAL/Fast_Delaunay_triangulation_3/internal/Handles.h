@@ -34,6 +34,10 @@ public:
   Point point() const { return tr_->point_of(id_); }
   Cell_handle cell() const { return tr_->incident_cell_of(id_); }
   bool is_valid(bool = false, int = 0) const { return tr_ != nullptr; }
+  // Only with a vertex base with info: the info lives in the triangulation's
+  // side array, writable through any handle (as CGAL's is through its handles).
+  template <class T = Tr>
+  typename T::Vertex_info& info() const { return tr_->vertex_info(id_); }
 
   Vertex_id id() const { return id_; }
   const Tr* triangulation() const { return tr_; }
@@ -94,6 +98,9 @@ public:
     return false;
   }
   bool is_valid(bool = false, int = 0) const { return tr_ != nullptr && mesh().is_live(id_); }
+  // Only with a cell base with info (see Vertex_and_cell_infos.h).
+  template <class T = Tr>
+  typename T::Cell_info& info() const { return tr_->cell_info(id_); }
 
   Tet_id id() const { return id_; }
   const Tr* triangulation() const { return tr_; }

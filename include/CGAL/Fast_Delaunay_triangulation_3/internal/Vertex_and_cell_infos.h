@@ -1,0 +1,178 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Infos of vertices and cells (CGAL's Triangulation_vertex_base_with_info_3
+// and Triangulation_cell_base_with_info_3) kept in side arrays beside the flat
+// mesh, so the kernel's records stay the paper's 32-byte vertex and
+// fixed-width tetrahedron arrays whatever the user attaches.
+//
+//   vertex infos: indexed by vertex id (ids never change once a bulk
+//                 insertion has returned), plus one for the infinite vertex;
+//   cell infos:   indexed by cell slot, each with the four vertex ids of the
+//                 cell it was written for.  The kernel reuses slots, so a slot
+//                 whose vertices changed holds a new cell: its info is reset
+//                 to Info() when next read.  A Delaunay cell destroyed by an
+//                 insertion never comes back (it is in conflict with the new
+//                 vertex for good), so equal vertex ids mean the same cell.
+//
+// Without infos (the default data structure) both arrays are empty types
+// and insertion takes the plain path: nothing is paid for them.
+
+#ifndef CGAL_FDT3_INTERNAL_VERTEX_AND_CELL_INFOS_H
+#define CGAL_FDT3_INTERNAL_VERTEX_AND_CELL_INFOS_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+
+#include <boost/tuple/tuple.hpp>
+
+#include <algorithm>
+#include <iterator>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// The Info of the vertex and cell types of a CGAL data structure (rebound by
+// the data structure, as CGAL does), or void when they have none or when the
+// data structure is Default.
+template <class Tds, class = void>
+struct Vertex_info_of { typedef void type; };
+template <class Tds>
+struct Vertex_info_of<Tds, std::void_t<typename Tds::Vertex::Info>> { typedef typename Tds::Vertex::Info type; };
+
+template <class Tds, class = void>
+struct Cell_info_of { typedef void type; };
+template <class Tds>
+struct Cell_info_of<Tds, std::void_t<typename Tds::Cell::Info>> { typedef typename Tds::Cell::Info type; };
+
+// One info in a vector: a wrapper, so that Info = bool gets real references.
+template <class Info>
+struct Info_slot
+{
+  Info value = Info();
+};
+
+template <class Info>
+class Vertex_infos
+{
+public:
+  // A reference that stays valid until the next insertion.
+  Info& at(Vertex_id v) const
+  {
+    if(v == ghost_vertex) return infinite_.value;
+    CGAL_assertion(v < infos_.size());
+    return infos_[v].value;
+  }
+
+  // After an insertion: one info per vertex, new vertices with Info().
+  void resize(std::size_t vertices) { infos_.resize(vertices); }
+
+  // infos[i] goes to vertex_of_input[i], in input order: a vertex given
+  // several times (or already present) keeps the last of its infos, as
+  // CGAL's insert of a range with infos overwrites on every duplicate.
+  void assign(const std::vector<Vertex_id>& vertex_of_input, std::vector<Info>& infos)
+  {
+    for(std::size_t i = 0; i < infos.size(); ++i) infos_[vertex_of_input[i]].value = std::move(infos[i]);
+  }
+
+  void clear()
+  {
+    infos_.clear();
+    infinite_ = Info_slot<Info>();
+  }
+
+private:
+  mutable std::vector<Info_slot<Info>> infos_;
+  mutable Info_slot<Info> infinite_;
+};
+
+template <>
+class Vertex_infos<void>
+{
+public:
+  void resize(std::size_t) {}
+  void clear() {}
+};
+
+template <class Info>
+class Cell_infos
+{
+public:
+  Info& at(const Flat_storage& m, Tet_id t) const
+  {
+    CGAL_precondition(t < m.number_of_slots() && m.is_live(t));
+    if(t >= entries_.size()) entries_.resize(m.number_of_slots());
+    Entry& e = entries_[t];
+    const Vertex_id* tv = &m.tet_vertices[4 * t];
+    if(!std::equal(tv, tv + 4, e.cell)) {
+      e.info = Info();
+      std::copy(tv, tv + 4, e.cell);
+    }
+    return e.info;
+  }
+
+  void clear() { entries_.clear(); }
+
+private:
+  struct Entry
+  {
+    Info info = Info();
+    // Four ghost ids match no cell (a cell has at most one ghost vertex).
+    Vertex_id cell[4] = {ghost_vertex, ghost_vertex, ghost_vertex, ghost_vertex};
+  };
+  mutable std::vector<Entry> entries_;
+};
+
+template <>
+class Cell_infos<void>
+{
+public:
+  void clear() {}
+};
+
+// The point and the info of one element of a range given to insert(): a
+// std::pair<Point, Info> (CGAL's insert of pairs), or a tuple (Point, Info) as
+// yielded by boost::zip_iterator.
+template <class A, class B>
+const A& point_part(const std::pair<A, B>& v) { return v.first; }
+template <class A, class B>
+const B& info_part(const std::pair<A, B>& v) { return v.second; }
+template <class H, class T>
+const H& point_part(const boost::tuples::cons<H, T>& v) { return boost::get<0>(v); }
+template <class H, class T>
+const auto& info_part(const boost::tuples::cons<H, T>& v) { return boost::get<1>(v); }
+template <class A, class B>
+const A& point_part(const std::tuple<A, B>& v) { return std::get<0>(v); }
+template <class A, class B>
+const B& info_part(const std::tuple<A, B>& v) { return std::get<1>(v); }
+
+// Copies the points of a range of (point, info) elements as x, y, z triples
+// and their infos, in input order.  Single-pass iterators are read once.
+template <class Info, class InputIterator>
+void read_points_and_infos(InputIterator first, InputIterator last, std::vector<double>& xyz,
+                           std::vector<Info>& infos)
+{
+  if(std::is_base_of<std::forward_iterator_tag,
+                      typename std::iterator_traits<InputIterator>::iterator_category>::value) {
+    const std::size_t n = static_cast<std::size_t>(std::distance(first, last));
+    xyz.reserve(3 * n);
+    infos.reserve(n);
+  }
+  for(; first != last; ++first) {
+    // By value: transform and zip iterators yield temporaries.
+    const auto value = *first;
+    const auto& p = point_part(value);
+    xyz.push_back(p.x());
+    xyz.push_back(p.y());
+    xyz.push_back(p.z());
+    infos.push_back(info_part(value));
+  }
+}
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_VERTEX_AND_CELL_INFOS_H
