@@ -289,7 +289,7 @@ private:
 
   // CAVITY: marks every tetrahedron in conflict with p as deleted and lists
   // the boundary facets.  Afterwards: s_.cavity holds exactly the deleted
-  // tetrahedra, no tetrahedron carries Tet_flags::outside, and every boundary
+  // tetrahedra, no tetrahedron carries the outside mark, and every boundary
   // facet has its outside tetrahedron live.  Partitioned: returns false, with
   // the mesh as before, when a tetrahedron in conflict is not owned.
   bool cavity(Tet_id start, const double* p)

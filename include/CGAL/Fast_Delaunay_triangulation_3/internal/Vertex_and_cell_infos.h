@@ -106,7 +106,7 @@ public:
     CGAL_precondition(t < m.number_of_slots() && m.is_live(t));
     if(t >= entries_.size()) entries_.resize(m.number_of_slots());
     Entry& e = entries_[t];
-    const Vertex_id* tv = &m.tet_vertices[4 * t];
+    const Vertex_id* tv = m.vertex_ids(t);
     if(!std::equal(tv, tv + 4, e.cell)) {
       e.info = Info();
       std::copy(tv, tv + 4, e.cell);
