@@ -370,22 +370,44 @@ inline int perturbed_coplanar_side_of_bounded_circle(const double* p0, const dou
 }
 
 // Conflict test of a finite tetrahedron (positively oriented a, b, c, d).
+// Only the static stage is inline: the cavity search runs it ~45 times per
+// point, and keeping the rare later stages in a separate function spares
+// this path their register saves and lets it be inlined into the search.
+__attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_static_stage(
+    const double* a, const double* b, const double* c, const double* d, const double* p)
+{
+  return perturbed_side_of_oriented_sphere(a, b, c, d, p) > 0;
+}
+
 inline bool finite_cell_in_conflict(const double* a, const double* b, const double* c,
                                     const double* d, const double* p,
                                     const Static_filter& filter = Static_filter())
 {
-  return perturbed_side_of_oriented_sphere(a, b, c, d, p, filter) > 0;
+  // Shewchuk's sign: negative determinant = p inside the sphere.
+  const double det = in_sphere_determinant(a, b, c, d, p);
+  if(det < -filter.in_sphere) return true;
+  if(det > filter.in_sphere) return false;
+  return finite_cell_in_conflict_beyond_static_stage(a, b, c, d, p);
 }
 
 // Conflict test of a ghost tetrahedron (a, b, c, infinite): its "sphere" is
 // the open half-space beyond the hull facet a, b, c, closed by CGAL's
 // perturbed in-circle test inside the facet's plane.
+__attribute__((noinline)) inline bool ghost_cell_in_conflict_beyond_static_stage(
+    const double* a, const double* b, const double* c, const double* p)
+{
+  const int o = orientation(a, b, c, p);
+  if(o != 0) return o > 0;
+  return perturbed_coplanar_side_of_bounded_circle(a, b, c, p) > 0;
+}
+
 inline bool ghost_cell_in_conflict(const double* a, const double* b, const double* c,
                                    const double* p, const Static_filter& filter = Static_filter())
 {
-  const int o = orientation(filter, a, b, c, p);
-  if(o != 0) return o > 0;
-  return perturbed_coplanar_side_of_bounded_circle(a, b, c, p) > 0;
+  const double det = orientation_determinant(a, b, c, p);
+  if(det > filter.orientation) return true;
+  if(det < -filter.orientation) return false;
+  return ghost_cell_in_conflict_beyond_static_stage(a, b, c, p);
 }
 
 } // namespace Fast_Delaunay_triangulation_3_internal
