@@ -1,13 +1,19 @@
 // CGAL's Triangulation_3 file format both ways (ours -> CGAL, CGAL -> ours,
-// ours -> ours, ASCII and binary) and rejection of malformed files with the
-// triangulation left as it was.  CGAL is the oracle: cells are compared with
-// those of CGAL's triangulation of the same points, and CGAL's is_valid()
-// judges what we write for it.
+// ours -> ours, ASCII and binary), rejection of malformed files with the
+// triangulation left as it was, and the hand-off to CGAL's own types
+// (Delaunay_triangulation_3 with sequential and parallel data structures,
+// Mesh_complex_3_in_triangulation_3 and tetrahedral remeshing).  CGAL is the
+// oracle: cells are compared with those of CGAL's triangulation of the same
+// points, and CGAL's is_valid() judges what we build for it.
 
 #include "triangulation_checks.h"
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/convert_to_cgal.h>
 
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Tetrahedral_remeshing/Remeshing_triangulation_3.h>
+#include <CGAL/tetrahedral_remeshing.h>
 
 #include <gtest/gtest.h>
 
@@ -463,6 +469,160 @@ TEST(FileFormat, ErrorNamesThePosition)
   ASSERT_FALSE(ours.read(is, &error));
   EXPECT_NE(error.find("vertex 3 of cell 7"), std::string::npos) << error;
   EXPECT_NE(error.find("999"), std::string::npos) << error;
+}
+
+// ---------------------------------------------------------------- conversion
+
+template <class Target>
+void expect_converted(const Fast_dt& ours, const Target& target, const std::vector<Point>& points, bool same_order)
+{
+  EXPECT_TRUE(target.is_valid(false));
+  EXPECT_TRUE(target.tds().is_valid(false));
+  EXPECT_EQ(target.dimension(), ours.dimension());
+  EXPECT_EQ(target.number_of_vertices(), ours.number_of_vertices());
+  EXPECT_EQ(target.number_of_cells(), ours.number_of_cells());
+  EXPECT_TRUE(finite_cell_keys(target) == finite_cell_keys(Cgal_dt(points.begin(), points.end())));
+  if(same_order) {
+    EXPECT_TRUE(cells_in_order(target) == cells_in_order(ours));
+  }
+}
+
+TEST(Conversion, ToCgalDelaunayTriangulation)
+{
+  for(const Named_input& input : three_dimensional_inputs()) {
+    SCOPED_TRACE(input.name);
+    const Fast_dt ours(input.points.begin(), input.points.end());
+    Cgal_dt cgal(input.points.begin(), input.points.begin() + 2); // replaced
+    CGAL::convert_to_cgal(ours, cgal);
+    expect_converted(ours, cgal, input.points, true);
+    expect_infinite_cells_face_outwards(cgal);
+    // A working CGAL triangulation: CGAL's own insertion and removal on it
+    // give CGAL's triangulation of the resulting point set.
+    std::vector<Point> more = to_points<Point>(uniform_points(200, 77));
+    cgal.insert(more.begin(), more.end());
+    const Point removed = cgal.finite_vertices_begin()->point();
+    cgal.remove(cgal.finite_vertices_begin());
+    EXPECT_TRUE(cgal.is_valid());
+    std::vector<Point> all = input.points;
+    all.insert(all.end(), more.begin(), more.end());
+    all.erase(std::remove(all.begin(), all.end(), removed), all.end());
+    const Cgal_dt reference(all.begin(), all.end());
+    EXPECT_TRUE(finite_cell_keys(cgal) == finite_cell_keys(reference));
+  }
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST(Conversion, ToCgalParallelDelaunayTriangulation)
+{
+  typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
+                                               CGAL::Delaunay_triangulation_cell_base_3<K>, CGAL::Parallel_tag>
+      Parallel_tds;
+  typedef CGAL::Delaunay_triangulation_3<K, Parallel_tds> Parallel_dt;
+  for(const Named_input& input : three_dimensional_inputs()) {
+    SCOPED_TRACE(input.name);
+    const Fast_dt ours(input.points.begin(), input.points.end());
+    Parallel_dt cgal;
+    CGAL::convert_to_cgal(ours, cgal);
+    expect_converted(ours, cgal, input.points, false);
+  }
+}
+#endif
+
+TEST(Conversion, LowerDimensionsInsertThePoints)
+{
+  std::vector<Point> coplanar;
+  for(int i = 0; i < 5; ++i)
+    for(int j = 0; j < 5; ++j) coplanar.push_back(Point(i, j, 0));
+  const Fast_dt ours(coplanar.begin(), coplanar.end());
+  Cgal_dt cgal;
+  CGAL::convert_to_cgal(ours, cgal);
+  EXPECT_TRUE(cgal.is_valid());
+  EXPECT_EQ(cgal.dimension(), 2);
+  EXPECT_TRUE(finite_facet_keys(cgal) == finite_facet_keys(Cgal_dt(coplanar.begin(), coplanar.end())));
+}
+
+typedef CGAL::Tetrahedral_remeshing::Remeshing_triangulation_3<K> Remeshing_tr;
+typedef CGAL::Mesh_complex_3_in_triangulation_3<Remeshing_tr> C3t3;
+
+// The facets of ours between cells of different sides of x = 0.5 (the hull
+// counts as side 0), counted independently of the conversion.
+std::size_t interface_facets(const Fast_dt& ours, double cut)
+{
+  auto side = [&](Fast_dt::Cell_handle c) {
+    if(ours.is_infinite(c)) return 0;
+    double x = 0;
+    for(int i = 0; i < 4; ++i) x += c->vertex(i)->point().x() / 4;
+    return x < cut ? 1 : 2;
+  };
+  std::size_t count = 0;
+  for(auto f = ours.finite_facets_begin(); f != ours.finite_facets_end(); ++f)
+    if(side(f->first) != side(f->first->neighbor(f->second))) ++count;
+  return count;
+}
+
+TEST(Conversion, ToMeshComplexOneSubdomain)
+{
+  const std::vector<Point> points = to_points<Point>(uniform_points(300, 51));
+  const Fast_dt ours(points.begin(), points.end());
+  C3t3 c3t3;
+  CGAL::convert_to_c3t3(ours, c3t3);
+  EXPECT_TRUE(c3t3.triangulation().is_valid());
+  EXPECT_EQ(c3t3.number_of_cells_in_complex(), ours.number_of_finite_cells());
+  EXPECT_EQ(c3t3.number_of_facets_in_complex(), hull_facet_keys(ours).size());
+  EXPECT_EQ(c3t3.number_of_facets_in_complex(), interface_facets(ours, 2.0));
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    EXPECT_EQ(c3t3.subdomain_index(c), 1);
+  std::size_t surface_vertices = 0;
+  for(auto v = c3t3.triangulation().finite_vertices_begin(); v != c3t3.triangulation().finite_vertices_end(); ++v)
+    if(v->in_dimension() == 2) ++surface_vertices;
+  EXPECT_EQ(surface_vertices, hull_vertex_keys(ours).size());
+}
+
+TEST(Conversion, ToMeshComplexWithSubdomainFunctor)
+{
+  const std::vector<Point> points = to_points<Point>(uniform_points(300, 52));
+  const Fast_dt ours(points.begin(), points.end());
+  C3t3 c3t3;
+  CGAL::convert_to_c3t3(ours, c3t3, [](Fast_dt::Cell_handle c) {
+    double x = 0;
+    for(int i = 0; i < 4; ++i) x += c->vertex(i)->point().x() / 4;
+    return x < 0.5 ? 1 : 2;
+  });
+  std::size_t in_one = 0, in_two = 0;
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    (c3t3.subdomain_index(c) == 1 ? in_one : in_two)++;
+  EXPECT_GT(in_one, 0u);
+  EXPECT_GT(in_two, 0u);
+  EXPECT_EQ(in_one + in_two, ours.number_of_finite_cells());
+  EXPECT_EQ(c3t3.number_of_facets_in_complex(), interface_facets(ours, 0.5));
+  // Three patches: hull of 1, hull of 2, interface 1-2.
+  std::set<int> patches;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+    patches.insert(c3t3.surface_patch_index(*f));
+  EXPECT_EQ(patches.size(), 3u);
+}
+
+TEST(Conversion, TetrahedralRemeshingAcceptsTheMeshComplex)
+{
+  const std::vector<Point> points = to_points<Point>(uniform_points(300, 53));
+  const Fast_dt ours(points.begin(), points.end());
+  C3t3 c3t3;
+  CGAL::convert_to_c3t3(ours, c3t3);
+  const std::size_t cells_before = c3t3.number_of_cells_in_complex();
+  // The hull is protected (its sharp edges are not marked as features, so
+  // remeshing it would round them off); the inside is remeshed.
+  CGAL::tetrahedral_isotropic_remeshing(
+      c3t3, 0.1, CGAL::parameters::number_of_iterations(2).remesh_boundaries(false));
+  EXPECT_TRUE(c3t3.triangulation().is_valid());
+  EXPECT_GT(c3t3.number_of_cells_in_complex(), 0u);
+  EXPECT_NE(c3t3.number_of_cells_in_complex(), cells_before) << "the remesher did nothing";
+  // The domain is kept: the volume of the complex is the hull's.
+  double volume_before = 0, volume_after = 0;
+  for(auto c = ours.finite_cells_begin(); c != ours.finite_cells_end(); ++c)
+    volume_before += ours.tetrahedron(c).volume();
+  for(auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+    volume_after += c3t3.triangulation().tetrahedron(c).volume();
+  EXPECT_NEAR(volume_after, volume_before, 1e-9 * volume_before);
 }
 
 } // namespace
