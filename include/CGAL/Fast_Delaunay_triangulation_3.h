@@ -17,9 +17,11 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_io.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_and_cell_infos.h>
 
 #include <CGAL/Default.h>
+#include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Iterator_range.h>
 #include <CGAL/Triangulation_utils_3.h>
@@ -781,6 +783,52 @@ public:
     return ok;
   }
 
+  // ---------------------------------------------------------------- input / output
+  // CGAL's file format for Triangulation_3, ASCII or binary after the
+  // stream's CGAL::IO mode; see operator<< and operator>> below and
+  // internal/Triangulation_io.h for the layout.  Points are written with the
+  // stream's precision, as CGAL does: set it to 17 for an exact round trip.
+  void write(std::ostream& os) const
+  {
+    if(dimension() == 3) {
+      Fast_Delaunay_triangulation_3_internal::write_triangulation_3(
+          os, core_.mesh, [this](Vertex_id v) { return point_of(v); });
+      return;
+    }
+    // No cells are stored below dimension 3.  CGAL's triangulation of the
+    // same points has the cells CGAL would write (it is unique there, as in
+    // dimension 3); building it costs O(n log n), once per write.
+    std::vector<Point> points;
+    points.reserve(number_of_vertices());
+    for(Vertex_id v = 0; v < vertex_count(); ++v) points.push_back(point_of(v));
+    os << Delaunay_triangulation_3<Gt>(points.begin(), points.end());
+  }
+
+  // Replaces the triangulation by the one read from `is`, after checking it
+  // (counts, index ranges, symmetric adjacency, orientation, Delaunay
+  // property; see Triangulation_reader).  On bad input: returns false, sets
+  // the stream's failbit, puts the reason (with the position) in `error` and
+  // leaves the triangulation unchanged.  Below dimension 3 the file's cells
+  // are checked and dropped: only the vertices are kept.
+  bool read(std::istream& is, std::string* error = nullptr)
+  {
+    Flat_storage built;
+    int built_dimension = -1;
+    Fast_Delaunay_triangulation_3_internal::Triangulation_reader<Point> reader(is);
+    if(!reader.read(built, built_dimension)) {
+      if(error) *error = reader.error();
+      is.setstate(std::ios_base::failbit);
+      return false;
+    }
+    core_.assign(std::move(built), built_dimension);
+    incident_cells_.clear();
+    // The file carries no infos: every vertex and cell starts with Info().
+    vertex_infos_.clear();
+    vertex_infos_.resize(number_of_vertices());
+    cell_infos_.clear();
+    return true;
+  }
+
   // ---------------------------------------------------------------- internals used by handles
   const Flat_storage& flat_storage() const { return core_.mesh; }
   Point point_of(Vertex_id v) const
@@ -960,6 +1008,26 @@ private:
   Fast_Delaunay_triangulation_3_internal::Vertex_infos<Vertex_info> vertex_infos_;
   Fast_Delaunay_triangulation_3_internal::Cell_infos<Cell_info> cell_infos_;
 };
+
+// Writes `tr` as CGAL::Triangulation_3's operator<< writes the same
+// triangulation: the file is readable by CGAL's operator>> and gives the same
+// cells.  In dimension 3 the vertices and cells are in our order (infinite
+// vertex last in each infinite cell).
+template <class Gt, class Tds, class Lp, class Lds>
+std::ostream& operator<<(std::ostream& os, const Fast_Delaunay_triangulation_3<Gt, Tds, Lp, Lds>& tr)
+{
+  tr.write(os);
+  return os;
+}
+
+// Reads a file written by CGAL's (or our) operator<<; on bad input sets the
+// failbit and leaves `tr` unchanged (tr.read(is, &error) says why).
+template <class Gt, class Tds, class Lp, class Lds>
+std::istream& operator>>(std::istream& is, Fast_Delaunay_triangulation_3<Gt, Tds, Lp, Lds>& tr)
+{
+  tr.read(is);
+  return is;
+}
 
 } // namespace CGAL
 

@@ -45,7 +45,7 @@ Default: `Default`.
 
 - Only insertion is provided: there is no `remove()`, `move()`, `locate()`,
   `nearest_vertex()`, `find_conflicts()`, `side_of_sphere()`, `dual()`,
-  stream operators, circulators (`incident_cells()`, `incident_edges()`,
+  circulators (`incident_cells()`, `incident_edges()`,
   `Cell_circulator`, ...), `is_edge()` / `is_facet()` / `is_cell()`, and no
   insertion of points with an info. The enum `Locate_type` is declared, but no
   member function uses it yet.
@@ -723,6 +723,31 @@ bool is_valid(bool verbose = false, int level = 0) const;
 
 /// @}
 
+/// \name Input/Output
+/// CGAL's file format for `Triangulation_3`; see also `operator<<()` and
+/// `operator>>()` below and the manual's section
+/// \ref Fast_Delaunay_triangulation_3IO.
+/// @{
+
+/*!
+Writes the triangulation as `Triangulation_3`'s `operator<<` writes the same
+triangulation (ASCII or binary after the stream's `CGAL::IO` mode; points
+with the stream's precision). Below dimension 3 the cells written are those
+of a `Delaunay_triangulation_3` built from the vertices.
+*/
+void write(std::ostream& os) const;
+
+/*!
+Replaces the triangulation by the one in `is`, in linear time, after checking
+counts, index ranges, symmetric adjacency, connectivity, orientation and the
+Delaunay property. On bad input returns `false`, sets the failbit of `is`,
+writes the reason and its position to `*error` (if not null) and leaves the
+triangulation unchanged. Below dimension 3 only the vertices are kept.
+*/
+bool read(std::istream& is, std::string* error = nullptr);
+
+/// @}
+
 /// \name Internal Access
 /// Public so that handles and iterators can reach the arrays; not part of the
 /// interface users should rely on.
@@ -752,5 +777,47 @@ smallest_cell_around_edge(Fast_Delaunay_triangulation_3_internal::Tet_id t, int 
 /// @}
 
 }; /* end Fast_Delaunay_triangulation_3 */
+
+/*!
+\relates Fast_Delaunay_triangulation_3
+Writes `tr` in the file format of `Triangulation_3`: readable by
+`Delaunay_triangulation_3`'s `operator>>`, with the same cells.
+*/
+template <class Gt, class Tds, class Lp, class Lds>
+std::ostream& operator<<(std::ostream& os, const Fast_Delaunay_triangulation_3<Gt, Tds, Lp, Lds>& tr);
+
+/*!
+\relates Fast_Delaunay_triangulation_3
+Reads a file written by `Triangulation_3`'s (or this class's) `operator<<`;
+see `read()`.
+*/
+template <class Gt, class Tds, class Lp, class Lds>
+std::istream& operator>>(std::istream& is, Fast_Delaunay_triangulation_3<Gt, Tds, Lp, Lds>& tr);
+
+/*!
+\relates Fast_Delaunay_triangulation_3
+Defined in `CGAL/Fast_Delaunay_triangulation_3/convert_to_cgal.h`. Makes
+`target` (a `Triangulation_3` or a class derived from it, with any data
+structure) a triangulation with the same cells as `source`, in the same order,
+by creating its vertices and cells directly: linear time, no point is
+re-inserted. Below dimension 3 the points are inserted into `target`.
+*/
+template <class Gt, class Tds, class Lp, class Lds, class Cgal_triangulation>
+void convert_to_cgal(const Fast_Delaunay_triangulation_3<Gt, Tds, Lp, Lds>& source, Cgal_triangulation& target);
+
+/*!
+\relates Fast_Delaunay_triangulation_3
+Defined in `CGAL/Fast_Delaunay_triangulation_3/convert_to_cgal.h`. Replaces
+`c3t3` (a `Mesh_complex_3_in_triangulation_3`) by `convert_to_cgal(source,
+c3t3.triangulation())`, with every finite cell `c` in the complex with
+subdomain `subdomain_of_cell(c)` (a `Cell_handle` of `source`; default 1;
+`Subdomain_index()` leaves the cell out) and every facet between two different
+subdomains, the outside included, a surface facet with index
+`surface_patch(s1, s2)`. Vertices get the Mesh_3 dimension 2 on the surface
+and 3 elsewhere.
+*/
+template <class Gt, class Tds, class Lp, class Lds, class C3t3, class Subdomain_of_cell, class Surface_patch_of_pair>
+void convert_to_c3t3(const Fast_Delaunay_triangulation_3<Gt, Tds, Lp, Lds>& source, C3t3& c3t3,
+                     Subdomain_of_cell subdomain_of_cell, Surface_patch_of_pair surface_patch);
 
 } /* end namespace CGAL */

@@ -85,6 +85,21 @@ public:
     hint_ = 0;
   }
 
+  // Takes over a triangulation built elsewhere (a file read by
+  // Triangulation_io.h), already checked with is_valid(): compact slots,
+  // distinct vertices, no cells below dimension 3.  Keeps the options.
+  void assign(Flat_storage&& built, int built_dimension)
+  {
+    const bool with_sub_determinants = mesh.with_sub_determinants;
+    mesh = std::move(built);
+    mesh.with_sub_determinants = false;
+    dimension = built_dimension;
+    reset_bounding_box();
+    extend_bounding_box(0);
+    hint_ = mesh.first_live_tet();
+    set_sub_determinants(with_sub_determinants);
+  }
+
   // Throws std::invalid_argument naming the first non-finite coordinate.
   static void check_finite(const double* xyz, std::size_t n)
   {
@@ -153,6 +168,13 @@ public:
     std::vector<Vertex_id> id;
     insert(p, 1, &id);
     return id[0];
+  }
+
+  // Dimension of the affine hull of the vertices (-1 if there are none).
+  int affine_dimension() const
+  {
+    Vertex_id simplex[4];
+    return affine_independent_vertices(static_cast<Vertex_id>(number_of_vertices()), simplex);
   }
 
   // Exact validity: combinatorics, orientation and the (perturbed) local
