@@ -73,8 +73,10 @@ struct Insertion_scratch
   // cavities of up to 60 boundary facets.
   static constexpr int table_size = 32;
 
-  std::vector<Tet_id> cavity;            // BFS queue, then the deleted tetrahedra
-  std::vector<Boundary_facet> boundary;  // facets of the cavity boundary
+  // Raw arrays: the cavity search fills them through plain pointers and sets
+  // their sizes at the end, without a capacity check per element.
+  Raw_array<Tet_id> cavity;              // BFS queue, then the deleted tetrahedra
+  Raw_array<Boundary_facet> boundary;    // facets of the cavity boundary
   std::vector<Tet_id> ball;              // slots of the new tetrahedra
   std::vector<Vertex_id> boundary_vertices;
   struct Half_edge { std::uint64_t key; Facet_code facet; };
@@ -294,18 +296,32 @@ private:
   // the mesh as before, when a tetrahedron in conflict is not owned.
   bool cavity(Tet_id start, const double* p)
   {
-    std::vector<Tet_id>& cavity = s_.cavity;
-    std::vector<Boundary_facet>& boundary = s_.boundary;
-    cavity.clear();
-    boundary.clear();
+    Raw_array<Tet_id>& cavity = s_.cavity;
+    Raw_array<Boundary_facet>& boundary = s_.boundary;
     s_.boundary_vertices.clear();
+    // Both arrays are used up to their capacity; a popped tetrahedron adds at
+    // most 4 entries to either, so capacity is checked once per pop.
+    cavity.resize(std::max<std::size_t>(cavity.capacity(), 64));
+    boundary.resize(std::max<std::size_t>(boundary.capacity(), 64));
+    Tet_id* queue = cavity.data();
+    Boundary_facet* facets = boundary.data();
+    std::size_t queued = 0, found = 0;
+
     cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
     m_.mark_free(start);
     prefetch_neighbors(start);
-    cavity.push_back(start);
+    queue[queued++] = start;
 
-    for(std::size_t k = 0; k < cavity.size(); ++k) {
-      const Tet_id t = cavity[k];
+    for(std::size_t k = 0; k < queued; ++k) {
+      if(queued + 4 > cavity.size()) {
+        cavity.resize(2 * cavity.size());
+        queue = cavity.data();
+      }
+      if(found + 4 > boundary.size()) {
+        boundary.resize(2 * boundary.size());
+        facets = boundary.data();
+      }
+      const Tet_id t = queue[k];
       for(int f = 0; f < 4; ++f) {
         const Facet_code code = m_.neighbor_code(t, f);
         const Tet_id u = tet_of(code);
@@ -316,22 +332,26 @@ private:
           ++s_.stats.conflict_tests;
           if(in_conflict(u, p)) {
             if(!ownership_.owns(m_, u)) {
+              cavity.resize(queued);
+              boundary.resize(found);
               undo_cavity();
               return false;
             }
             m_.mark_free(u);
             prefetch_neighbors(u);
-            cavity.push_back(u);
+            queue[queued++] = u;
             cavity_ghosts_ += m_.is_ghost(u) ? 1 : 0;
             continue;
           }
           m_.mark_outside(u);
         }
-        push_boundary_facet(t, f, code);
+        write_boundary_facet(facets[found++], t, f, code);
       }
     }
+    cavity.resize(queued);
+    boundary.resize(found);
     clear_outside_flags();
-    s_.stats.cavity_tets += cavity.size();
+    s_.stats.cavity_tets += queued;
     return true;
   }
 
@@ -357,7 +377,7 @@ private:
     for(Vertex_id v : s_.boundary_vertices) m_.vertices[v].scratch = 0;
   }
 
-  void push_boundary_facet(Tet_id t, int f, Facet_code outside)
+  void write_boundary_facet(Boundary_facet& record, Tet_id t, int f, Facet_code outside)
   {
     // t is in the cavity: its v[0] carries the mark.
     const Vertex_id* tv = m_.vertex_ids(t);
@@ -371,8 +391,6 @@ private:
     }
     // Written field by field: building the record on the stack and copying
     // it stalled on store forwarding (measured 6% of the insertion time).
-    s_.boundary.emplace_back();
-    Boundary_facet& record = s_.boundary.back();
     record.v[0] = a;
     record.v[1] = b;
     record.v[2] = c;
