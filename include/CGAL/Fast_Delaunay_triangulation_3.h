@@ -34,6 +34,7 @@
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
 #include <iostream>
 #include <iterator>
 #include <string>
@@ -179,14 +180,21 @@ public:
     friend bool operator!=(const Facet_iterator_t& a, const Facet_iterator_t& b) { return a.code_ != b.code_; }
 
   private:
+    // In dimension 2 the facets are the triangles, as (c, 3).
     void skip()
     {
       const Flat_storage& m = tr_->core_.mesh;
-      const std::size_t end = 4 * m.number_of_slots();
+      const std::size_t end = 4 * tr_->slots_of_faces(2);
+      const bool planar = tr_->dimension() == 2;
       for(; code_ < end; ++code_) {
         const Tet_id t = code_ >> 2;
         const int i = static_cast<int>(code_ & 3);
-        if(!m.is_live(t) || m.neighbor(t, i) < t) continue;
+        if(!m.is_live(t)) continue;
+        if(planar) {
+          if(i != 3 || (finite_only && tr_->has_infinite_vertex(t))) continue;
+          break;
+        }
+        if(m.neighbor(t, i) < t) continue;
         if(finite_only && m.is_ghost(t) && i != 3) continue;
         break;
       }
@@ -220,18 +228,23 @@ public:
     friend bool operator!=(const Edge_iterator_t& a, const Edge_iterator_t& b) { return a.code_ != b.code_; }
 
   private:
+    // In dimension 1 the edges are the segments (c, 0, 1); in dimension 2
+    // each triangle reports the edges whose other triangle has a larger index.
     void skip()
     {
       const Flat_storage& m = tr_->core_.mesh;
-      const std::size_t end = 6 * m.number_of_slots();
+      const std::size_t end = 6 * tr_->slots_of_faces(1);
+      const int dimension = tr_->dimension();
       for(; code_ < end; ++code_) {
         const Tet_id t = code_ / 6;
         if(!m.is_live(t)) { code_ = 6 * t + 5; continue; }
         const int i = edge_vertex[code_ % 6][0], j = edge_vertex[code_ % 6][1];
+        if(j > dimension) continue;
         if(finite_only && (m.vertex(t, i) == Fast_Delaunay_triangulation_3_internal::ghost_vertex ||
                            m.vertex(t, j) == Fast_Delaunay_triangulation_3_internal::ghost_vertex))
           continue;
-        if(tr_->smallest_cell_around_edge(t, i, j) == t) break;
+        if(dimension == 1 || (dimension == 2 && m.neighbor(t, 3 - i - j) > t)) break;
+        if(dimension == 3 && tr_->smallest_cell_around_edge(t, i, j) == t) break;
       }
       if(code_ < end)
         edge_ = Edge(Cell_handle(tr_, code_ / 6), edge_vertex[code_ % 6][0], edge_vertex[code_ % 6][1]);
@@ -421,37 +434,56 @@ public:
   const Geom_traits& geom_traits() const { return traits_; }
   int dimension() const { return core_.dimension; }
   size_type number_of_vertices() const { return core_.number_of_vertices(); }
-  // Cells, finite and infinite; 0 in dimension < 3 (this package stores no
-  // lower-dimensional cells).
+  // Cells, finite and infinite; 0 in dimension < 3, as in CGAL (the triangles
+  // of dimension 2 are facets, the segments of dimension 1 edges).
   size_type number_of_cells() const { return dimension() < 3 ? 0 : core_.mesh.live_tets; }
   size_type number_of_finite_cells() const
   {
     return dimension() < 3 ? 0 : core_.mesh.live_tets - core_.mesh.ghost_tets;
   }
-  size_type number_of_facets() const { return 2 * number_of_cells(); }
+  size_type number_of_facets() const
+  {
+    return dimension() == 3 ? 2 * number_of_cells() : dimension() == 2 ? core_.mesh.live_tets : 0;
+  }
   size_type number_of_finite_facets() const
   {
+    if(dimension() == 2) return core_.mesh.live_tets - core_.mesh.ghost_tets;
     return dimension() < 3 ? 0 : (4 * number_of_finite_cells() + core_.mesh.ghost_tets) / 2;
   }
-  // Euler's relation on the triangulated ball: V - E + F - T = 1.
+  // Dimension 3: Euler's relation on the triangulated ball, V - E + F - T = 1.
+  // Dimension 2: each triangle has 3 edges, each edge 2 triangles, and one
+  // infinite edge per infinite triangle (per hull edge, so per hull vertex).
+  // Dimension 1: the segments, two of them infinite.
   size_type number_of_finite_edges() const
   {
-    if(dimension() < 3) return 0;
-    return number_of_vertices() + number_of_finite_facets() - number_of_finite_cells() - 1;
+    switch(dimension()) {
+      case 3: return number_of_vertices() + number_of_finite_facets() - number_of_finite_cells() - 1;
+      case 2: return 3 * core_.mesh.live_tets / 2 - core_.mesh.ghost_tets;
+      case 1: return core_.mesh.live_tets - 2;
+      default: return 0;
+    }
   }
   // Plus one infinite edge per hull vertex; the hull is a triangulated sphere
   // with H facets and H/2 + 2 vertices.
   size_type number_of_edges() const
   {
-    return dimension() < 3 ? 0 : number_of_finite_edges() + core_.mesh.ghost_tets / 2 + 2;
+    switch(dimension()) {
+      case 3: return number_of_finite_edges() + core_.mesh.ghost_tets / 2 + 2;
+      case 2: return 3 * core_.mesh.live_tets / 2;
+      case 1: return core_.mesh.live_tets;
+      default: return 0;
+    }
   }
 
   Vertex_handle infinite_vertex() const
   {
     return Vertex_handle(this, Fast_Delaunay_triangulation_3_internal::ghost_vertex);
   }
+  // Below dimension 3, a triangle, segment or point cell that has the infinite
+  // vertex (null in dimension -1).
   Cell_handle infinite_cell() const
   {
+    if(dimension() < 3) return incident_cell_of(Fast_Delaunay_triangulation_3_internal::ghost_vertex);
     const Flat_storage& m = core_.mesh;
     for(Tet_id t = 0; t < m.number_of_slots(); ++t)
       if(m.is_live(t) && m.is_ghost(t)) return Cell_handle(this, t);
@@ -459,9 +491,17 @@ public:
   }
 
   bool is_infinite(Vertex_handle v) const { return v->id() == Fast_Delaunay_triangulation_3_internal::ghost_vertex; }
-  bool is_infinite(Cell_handle c) const { return core_.mesh.is_ghost(c->id()); }
+  // Also below dimension 3 (where CGAL requires dimension 3): whether c has
+  // the infinite vertex.
+  bool is_infinite(Cell_handle c) const
+  {
+    return dimension() == 3 ? core_.mesh.is_ghost(c->id()) : has_infinite_vertex(c->id());
+  }
+  // Dimension 2: facet (c, 3) is the triangle c.
   bool is_infinite(Cell_handle c, int i) const
   {
+    CGAL_precondition(dimension() == 3 || (dimension() == 2 && i == 3));
+    if(dimension() == 2) return has_infinite_vertex(c->id());
     return is_infinite(c) && i != 3; // the ghost vertex is always vertex 3
   }
   bool is_infinite(const Facet& f) const { return is_infinite(f.first, f.second); }
@@ -506,7 +546,8 @@ public:
   Segment segment(const Edge& e) const { return segment(e.first, e.second, e.third); }
 
   // ---------------------------------------------------------------- point location
-  // Dimension 3 only (precondition): below it this package stores no cells.
+  // Dimension 3 only (precondition): below it the cells are CGAL's
+  // (Lower_dimensions.h) but no walk is written for them.
   // CGAL's semantics: a point on the hull boundary is in a finite cell; one
   // outside is in an infinite cell whose finite facet sees it, li being the
   // infinite vertex.  The cell found may differ from CGAL's when several
@@ -584,11 +625,16 @@ public:
     return dimension() == 3 && c->triangulation() == this && c->id() < core_.mesh.number_of_slots() &&
            core_.mesh.is_live(c->id());
   }
+  // Below dimension 3 these scan all cells (lower dimensions are a corner
+  // case).  Like CGAL 5.5, which looks among the cells around u and finds
+  // none below dimension 2, is_edge() is false in dimension 1.
   bool is_edge(Vertex_handle u, Vertex_handle v, Cell_handle& c, int& i, int& j) const
   {
     int index[2];
     const Vertex_handle others[1] = {v};
-    if(dimension() < 3 || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+    if(dimension() < 2 || u == v) return false;
+    if(dimension() < 3 ? !lower_dimensional_cell_with(u, others, c, index)
+                       : !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
       return false;
     i = index[0]; j = index[1];
     return true;
@@ -597,7 +643,9 @@ public:
   {
     int index[3];
     const Vertex_handle others[2] = {v, w};
-    if(dimension() < 3 || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+    if(dimension() < 2 || u == v || u == w || v == w) return false;
+    if(dimension() < 3 ? !lower_dimensional_cell_with(u, others, c, index)
+                       : !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
       return false;
     i = index[0]; j = index[1]; k = index[2];
     return true;
@@ -730,18 +778,18 @@ public:
   }
 
   All_facets_iterator all_facets_begin() const { return All_facets_iterator(this, 0); }
-  All_facets_iterator all_facets_end() const { return All_facets_iterator(this, 4 * cell_slots()); }
+  All_facets_iterator all_facets_end() const { return All_facets_iterator(this, 4 * slots_of_faces(2)); }
   All_facets_iterator facets_begin() const { return all_facets_begin(); }
   All_facets_iterator facets_end() const { return all_facets_end(); }
   Finite_facets_iterator finite_facets_begin() const { return Finite_facets_iterator(this, 0); }
-  Finite_facets_iterator finite_facets_end() const { return Finite_facets_iterator(this, 4 * cell_slots()); }
+  Finite_facets_iterator finite_facets_end() const { return Finite_facets_iterator(this, 4 * slots_of_faces(2)); }
 
   All_edges_iterator all_edges_begin() const { return All_edges_iterator(this, 0); }
-  All_edges_iterator all_edges_end() const { return All_edges_iterator(this, 6 * cell_slots()); }
+  All_edges_iterator all_edges_end() const { return All_edges_iterator(this, 6 * slots_of_faces(1)); }
   All_edges_iterator edges_begin() const { return all_edges_begin(); }
   All_edges_iterator edges_end() const { return all_edges_end(); }
   Finite_edges_iterator finite_edges_begin() const { return Finite_edges_iterator(this, 0); }
-  Finite_edges_iterator finite_edges_end() const { return Finite_edges_iterator(this, 6 * cell_slots()); }
+  Finite_edges_iterator finite_edges_end() const { return Finite_edges_iterator(this, 6 * slots_of_faces(1)); }
 
   All_cells all_cells() const { return All_cells(all_cells_begin(), all_cells_end()); }
   Finite_cells finite_cells() const { return Finite_cells(finite_cells_begin(), finite_cells_end()); }
@@ -844,10 +892,24 @@ public:
   Info& cell_info(Tet_id c) const { return cell_infos_.at(core_.mesh, c); }
   Cell_handle incident_cell_of(Vertex_id v) const
   {
-    if(dimension() < 3) return Cell_handle();
+    if(dimension() < 0) return Cell_handle();
     if(incident_cells_.empty()) build_incident_cells();
-    if(v == Fast_Delaunay_triangulation_3_internal::ghost_vertex) return infinite_cell();
+    if(v == Fast_Delaunay_triangulation_3_internal::ghost_vertex)
+      return dimension() == 3 ? infinite_cell() : Cell_handle(this, incident_cells_.back());
     return Cell_handle(this, incident_cells_[v]);
+  }
+  // Below dimension 3 the infinite vertex may be in any slot up to the dimension.
+  bool has_infinite_vertex(Tet_id t) const
+  {
+    const Fast_Delaunay_triangulation_3_internal::Vertex_id* v = core_.mesh.vertex_ids(t);
+    const int last = std::max(dimension(), 0);
+    return std::find(v, v + last + 1, Fast_Delaunay_triangulation_3_internal::ghost_vertex) != v + last + 1;
+  }
+  // Slots the iterators over faces of dimension `face_dimension` scan: none
+  // when the triangulation has no such faces.
+  std::size_t slots_of_faces(int face_dimension) const
+  {
+    return dimension() < face_dimension ? 0 : core_.mesh.number_of_slots();
   }
   // The cell of smallest index among those around edge (v_i, v_j) of t.
   Tet_id smallest_cell_around_edge(Tet_id t, int i, int j) const
@@ -966,17 +1028,44 @@ private:
   std::size_t cell_slots() const { return dimension() < 3 ? 0 : core_.mesh.number_of_slots(); }
   Vertex_id vertex_count() const { return static_cast<Vertex_id>(number_of_vertices()); }
 
+  // One cell per finite vertex, then one for the infinite vertex (read below
+  // dimension 3 only).
   void build_incident_cells() const
   {
     const Flat_storage& m = core_.mesh;
-    incident_cells_.assign(number_of_vertices(), Tet_id(-1));
+    const int last = std::max(dimension(), 0);
+    incident_cells_.assign(number_of_vertices() + 1, Tet_id(-1));
     for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
       if(!m.is_live(t)) continue;
-      for(int i = 0; i < 4; ++i) {
+      for(int i = 0; i <= last; ++i) {
         const Vertex_id v = m.vertex(t, i);
-        if(v != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[v] = t;
+        incident_cells_[v == Fast_Delaunay_triangulation_3_internal::ghost_vertex ? number_of_vertices() : v] = t;
       }
     }
+  }
+
+  // The cell of dimension 1 or 2 that has u and others (by linear scan),
+  // with their indices in it.
+  template <std::size_t N>
+  bool lower_dimensional_cell_with(Vertex_handle u, const Vertex_handle (&others)[N], Cell_handle& c,
+                                   int (&index)[N + 1]) const
+  {
+    const Flat_storage& m = core_.mesh;
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+      if(!m.is_live(t)) continue;
+      bool all = true;
+      for(std::size_t k = 0; k <= N && all; ++k) {
+        const Vertex_id id = k == 0 ? u->id() : others[k - 1]->id();
+        index[k] = -1;
+        for(int i = 0; i <= dimension(); ++i)
+          if(m.vertex(t, i) == id) index[k] = i;
+        all = index[k] >= 0;
+      }
+      if(!all) continue;
+      c = Cell_handle(this, t);
+      return true;
+    }
+    return false;
   }
 
   template <class InputIterator>

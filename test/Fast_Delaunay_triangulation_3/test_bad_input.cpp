@@ -29,7 +29,7 @@ const Bad_value bad_values[] = {{"NaN", std::numeric_limits<double>::quiet_NaN()
                                 {"-inf", -std::numeric_limits<double>::infinity()}};
 
 // Triangulations a failed insertion must leave alone: empty, one vertex,
-// planar (no cells stored), spatial.
+// planar (triangles only), spatial.
 struct Start
 {
   const char* name;

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <map>
 #include <set>
 #include <tuple>
@@ -209,8 +210,30 @@ void expect_volume_of_hull(const Tr& tr, const std::vector<Point>& points)
   EXPECT_TRUE(volume == hull_volume) << CGAL::to_double(volume) << " vs " << CGAL::to_double(hull_volume);
 }
 
+// Below dimension 3: the counts of every kind of face, the iterators that
+// enumerate them, and the finite triangles (dimension 2) and segments
+// (dimensions 1 and 2) as point tuples.
+template <class Tr>
+void expect_same_lower_dimensional_faces(const Tr& tr, const Cgal_dt& cgal)
+{
+  ASSERT_LT(cgal.dimension(), 3);
+  EXPECT_EQ(tr.number_of_cells(), cgal.number_of_cells());
+  EXPECT_EQ(tr.number_of_finite_cells(), cgal.number_of_finite_cells());
+  EXPECT_EQ(tr.number_of_facets(), cgal.number_of_facets());
+  EXPECT_EQ(tr.number_of_finite_facets(), cgal.number_of_finite_facets());
+  EXPECT_EQ(tr.number_of_edges(), cgal.number_of_edges());
+  EXPECT_EQ(tr.number_of_finite_edges(), cgal.number_of_finite_edges());
+  EXPECT_EQ(std::distance(tr.all_cells_begin(), tr.all_cells_end()), 0);
+  EXPECT_EQ(std::distance(tr.finite_cells_begin(), tr.finite_cells_end()), 0);
+  EXPECT_EQ(std::size_t(std::distance(tr.all_facets_begin(), tr.all_facets_end())), cgal.number_of_facets());
+  EXPECT_EQ(std::size_t(std::distance(tr.all_edges_begin(), tr.all_edges_end())), cgal.number_of_edges());
+  EXPECT_TRUE(finite_facet_keys(tr) == finite_facet_keys(cgal)) << "different triangles";
+  EXPECT_TRUE(finite_edge_keys(tr) == finite_edge_keys(cgal)) << "different edges";
+}
+
 // `tr` is the triangulation CGAL builds from the same points: same dimension
-// and vertices, and in dimension 3 the same cells, checked independently.
+// and vertices, and the same cells (in dimension 3 also checked
+// independently) or lower-dimensional faces.
 template <class Tr>
 void expect_same_as_cgal(const Tr& tr, const Cgal_dt& cgal)
 {
@@ -218,7 +241,10 @@ void expect_same_as_cgal(const Tr& tr, const Cgal_dt& cgal)
   ASSERT_EQ(tr.dimension(), cgal.dimension());
   ASSERT_EQ(tr.number_of_vertices(), cgal.number_of_vertices());
   EXPECT_TRUE(finite_vertex_keys(tr) == finite_vertex_keys(cgal)) << "different vertices";
-  if(cgal.dimension() < 3) return;
+  if(cgal.dimension() < 3) {
+    expect_same_lower_dimensional_faces(tr, cgal);
+    return;
+  }
   EXPECT_EQ(tr.number_of_cells(), cgal.number_of_cells());
   EXPECT_EQ(tr.number_of_finite_cells(), cgal.number_of_finite_cells());
   EXPECT_TRUE(finite_cell_keys(tr) == finite_cell_keys(cgal)) << "different cells";

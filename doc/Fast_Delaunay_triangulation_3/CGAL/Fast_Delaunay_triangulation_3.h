@@ -52,12 +52,12 @@ Default: `Default`.
 - The class does not derive from `Triangulation_utils_3`, so its static index
   helpers (`ccw()`, `cw()`, `vertex_triple_index()`, `next_around_edge()`)
   are not members.
-- Below dimension 3 no cells are stored (Section
-  \ref Fast_Delaunay_triangulation_3DegenerateDimensions of the manual):
-  `number_of_cells()`, `number_of_facets()`, `number_of_edges()` and their
-  finite variants return 0, cell, facet and edge iterators are empty,
-  `v->cell()` and `infinite_cell()` return a null handle. `dimension()` has
-  the value `Delaunay_triangulation_3` would have.
+- Below dimension 3 the cells, counts and iterators are those of
+  `Delaunay_triangulation_3` (Section
+  \ref Fast_Delaunay_triangulation_3DegenerateDimensions of the manual), but
+  point location and the incident / adjacent queries need dimension 3, a cell
+  info does not survive an insertion that adds a vertex, and in the empty
+  triangulation `infinite_cell()` is a null handle.
 - Handles are a pair (pointer to the triangulation, index in the flat
   arrays), and iterators hold such a pair. A handle names a slot of the
   triangulation it came from: after a move, a swap or an assignment it still
@@ -123,7 +123,7 @@ typedef std::ptrdiff_t difference_type;
 A vertex, as seen through the triangulation: the value type of the vertex
 iterators and the object a `Vertex_handle` points to. Its members are
 `Point point() const`, `Cell_handle cell() const` (an incident cell, or a null
-handle below dimension 3) and `bool is_valid(bool = false, int = 0) const`.
+handle in dimension -1) and `bool is_valid(bool = false, int = 0) const`.
 */
 typedef unspecified_type Vertex;
 
@@ -463,7 +463,7 @@ The number of finite vertices.
 size_type number_of_vertices() const;
 
 /*!
-The number of cells, finite and infinite; 0 if `dimension() < 3`.
+The number of cells, finite and infinite; 0 if `dimension() < 3` (as in CGAL).
 */
 size_type number_of_cells() const;
 
@@ -473,24 +473,27 @@ size_type number_of_cells() const;
 size_type number_of_finite_cells() const;
 
 /*!
-Twice the number of cells; 0 if `dimension() < 3`.
+Twice the number of cells; the number of triangles, finite and infinite, in
+dimension 2; 0 below.
 */
 size_type number_of_facets() const;
 
 /*!
-The interior facets plus the convex hull facets; 0 if `dimension() < 3`.
+The interior facets plus the convex hull facets; the finite triangles in
+dimension 2; 0 below.
 */
 size_type number_of_finite_facets() const;
 
 /*!
 Computed from Euler's relation on the triangulated ball,
-\f$ V - E + F - T = 1 \f$; 0 if `dimension() < 3`.
+\f$ V - E + F - T = 1 \f$; in dimension 2, 3/2 of the triangles less one per
+hull edge; in dimension 1 the finite segments; 0 below.
 */
 size_type number_of_finite_edges() const;
 
 /*!
-The finite edges plus one infinite edge per convex hull vertex; 0 if
-`dimension() < 3`.
+The finite edges plus one infinite edge per convex hull vertex (in dimensions
+3 and 2; two in dimension 1); 0 below dimension 1.
 */
 size_type number_of_edges() const;
 
@@ -499,7 +502,8 @@ size_type number_of_edges() const;
 Vertex_handle infinite_vertex() const;
 
 /*!
-An infinite cell, or a null handle if `dimension() < 3`. Scans the cells.
+An infinite cell (a cell with the infinite vertex below dimension 3), or a
+null handle in dimension -1. Scans the cells.
 */
 Cell_handle infinite_cell() const;
 
@@ -530,11 +534,14 @@ Tetrahedron tetrahedron(Cell_handle c) const;
 bool is_infinite(Vertex_handle v) const;
 
 /*!
+Whether `c` has the infinite vertex; also below dimension 3, where
+`Delaunay_triangulation_3` requires dimension 3.
 */
 bool is_infinite(Cell_handle c) const;
 
 /*!
-Whether facet `i` of `c` contains the infinite vertex.
+Whether facet `i` of `c` contains the infinite vertex; in dimension 2, `i` is
+3 and the facet is the triangle `c`.
 */
 bool is_infinite(Cell_handle c, int i) const;
 
@@ -715,7 +722,9 @@ through its finite facet; that finite cells are positively oriented and the
 convex hull facets are seen from outside by their infinite cells; that every
 finite cell is locally Delaunay across each facet (with the symbolic
 perturbation); that the stored counts match; and that every vertex is in a
-cell. Below dimension 3 it checks that no cell is stored. If `verbose`, the
+cell. Below dimension 3 it checks CGAL's conventions for segments and
+triangles, collinearity and order along the line, or coplanarity, orientation,
+a convex hull and the perturbed local Delaunay property. If `verbose`, the
 first problem found is written to `std::cerr`. The `level` argument is
 ignored.
 */
@@ -764,7 +773,7 @@ The point of vertex id `v`; `Point(0, 0, 0)` for the infinite vertex.
 Point point_of(Fast_Delaunay_triangulation_3_internal::Vertex_id v) const;
 
 /*!
-A cell incident to vertex id `v`, or a null handle below dimension 3.
+A cell incident to vertex id `v`, or a null handle in dimension -1.
 */
 Cell_handle incident_cell_of(Fast_Delaunay_triangulation_3_internal::Vertex_id v) const;
 

@@ -59,6 +59,10 @@ typedef std::uint32_t Facet_code; // 4 * tetrahedron + facet
 constexpr Vertex_id mark_bit = Vertex_id(1) << 31;
 constexpr Vertex_id ghost_vertex = mark_bit - 1;
 constexpr Vertex_id max_vertices = ghost_vertex - 1;
+// Fills the unused vertex slots of a cell below dimension 3 (slot 3 of a
+// triangle, slots 2 and 3 of a segment); never a vertex id, since ids stay
+// below max_vertices.  Handles show it as a null Vertex_handle, as CGAL does.
+constexpr Vertex_id no_vertex = max_vertices;
 // Tetrahedron slots addressable by a facet code.
 constexpr std::uint64_t max_tets = (std::uint64_t(std::numeric_limits<Facet_code>::max()) >> 2) + 1;
 

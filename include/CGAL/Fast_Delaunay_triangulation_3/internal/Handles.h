@@ -57,8 +57,16 @@ public:
   Cell_facade() = default;
   Cell_facade(const Tr* tr, Tet_id id) : tr_(tr), id_(id) {}
 
-  Vertex_handle vertex(int i) const { return Vertex_handle(tr_, mesh().vertex(id_, i)); }
-  Cell_handle neighbor(int i) const { return Cell_handle(tr_, mesh().neighbor(id_, i)); }
+  // Below dimension 3, slots above the dimension are null handles, as in CGAL.
+  Vertex_handle vertex(int i) const
+  {
+    const Vertex_id v = mesh().vertex(id_, i);
+    return v == no_vertex ? Vertex_handle() : Vertex_handle(tr_, v);
+  }
+  Cell_handle neighbor(int i) const
+  {
+    return i > tr_->dimension() ? Cell_handle() : Cell_handle(tr_, mesh().neighbor(id_, i));
+  }
   int index(Vertex_handle v) const
   {
     int i = -1;
@@ -93,7 +101,7 @@ public:
   }
   bool has_neighbor(Cell_handle c, int& i) const
   {
-    for(int k = 0; k < 4; ++k)
+    for(int k = 0; k <= tr_->dimension(); ++k)
       if(mesh().neighbor(id_, k) == c->id()) { i = k; return true; }
     return false;
   }

@@ -6,8 +6,9 @@
 // DELAUNAYBALL per point).  The public class template wraps it with handles
 // and iterators; data flows one way: points -> sort -> kernel -> arrays.
 //
-// Dimensions below 3: only the (distinct) vertices are stored, no cells; the
-// first insertion that makes the points span 3D builds the triangulation of
+// Dimensions below 3: the (distinct) vertices and CGAL's lower-dimensional
+// cells (Lower_dimensions.h), rebuilt by every insertion that adds a vertex;
+// the first insertion that makes the points span 3D builds the tetrahedra of
 // all of them.  Vertex ids never change once given, except that a bulk
 // insertion removes its own duplicates before returning.
 
@@ -17,6 +18,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/BRIO.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 
@@ -64,6 +66,7 @@ public:
       return;
     }
     mesh.tet_sub_determinants.resize(4 * mesh.number_of_slots());
+    if(dimension < 3) return; // computed when the tetrahedra are built
     for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
       if(mesh.is_live(t)) update_sub_determinants(mesh, t);
   }
@@ -153,6 +156,7 @@ public:
     }
     const Clock::time_point t2 = Clock::now();
     const std::size_t added = remove_duplicates(first_new, duplicate_of);
+    if(dimension < 3 && added != 0) build_lower_dimensional_cells(mesh, dimension);
     if(vertex_of_input) {
       vertex_of_input->resize(n);
       for(std::size_t i = 0; i < n; ++i)
@@ -393,7 +397,7 @@ private:
         if(!mesh.is_live(t)) continue;
         for(int i = 0; i < 4; ++i) {
           Vertex_id& v = mesh.vertex_ids(t)[i];
-          if(v != ghost_vertex && v >= first_new) v = new_id[v - first_new];
+          if(v != ghost_vertex && v != no_vertex && v >= first_new) v = new_id[v - first_new];
         }
       }
     }
@@ -412,10 +416,7 @@ inline bool Triangulation_core::is_valid(std::string* why) const
     if(why) *why = message;
     return false;
   };
-  if(dimension < 3) {
-    if(mesh.live_tets != 0) return fail("cells stored in dimension < 3");
-    return true;
-  }
+  if(dimension < 3) return lower_dimensional_cells_are_valid(mesh, dimension, why);
   const Flat_storage& m = mesh;
   std::size_t live = 0, ghosts = 0;
   std::vector<char> used(number_of_vertices(), 0);
