@@ -90,13 +90,15 @@ public:
 
   // Takes over a triangulation built elsewhere (a file read by
   // Triangulation_io.h), already checked with is_valid(): compact slots,
-  // distinct vertices, no cells below dimension 3.  Keeps the options.
+  // distinct vertices; below dimension 3 only the vertices, whose cells are
+  // rebuilt here (the Delaunay triangulation is unique).  Keeps the options.
   void assign(Flat_storage&& built, int built_dimension)
   {
     const bool with_sub_determinants = mesh.with_sub_determinants;
     mesh = std::move(built);
     mesh.with_sub_determinants = false;
     dimension = built_dimension;
+    if(dimension < 3 && !mesh.vertices.empty()) build_lower_dimensional_cells(mesh, dimension);
     reset_bounding_box();
     extend_bounding_box(0);
     hint_ = mesh.first_live_tet();
