@@ -14,6 +14,7 @@
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Conflict_zone.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
@@ -24,6 +25,7 @@
 #include <CGAL/Iterator_range.h>
 #include <CGAL/Triangulation_utils_3.h>
 #include <CGAL/enum.h>
+#include <CGAL/iterator.h>
 #include <CGAL/utility.h>
 #include <CGAL/tags.h>
 
@@ -32,6 +34,8 @@
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <iterator>
 #include <string>
@@ -412,8 +416,144 @@ public:
     vertex_infos_.resize(number_of_vertices());
     return Vertex_handle(this, v);
   }
-  Vertex_handle insert(const Point& p, Cell_handle) { return insert(p); }
-  Vertex_handle insert(const Point& p, Vertex_handle) { return insert(p); }
+  // CGAL's insert(p, hint): in dimension 3 the kernel's walk starts at the
+  // hint (a cell, or a cell of the vertex); below, as insert(p).  The lock
+  // zone of CGAL's parallel insertion is always granted: nothing is locked.
+  Vertex_handle insert(const Point& p, Cell_handle start, bool* could_lock_zone = nullptr)
+  {
+    if(could_lock_zone) *could_lock_zone = true;
+    std::vector<Tet_id> ball;
+    return insert_from(p, start, ball);
+  }
+  Vertex_handle insert(const Point& p, Vertex_handle hint, bool* could_lock_zone = nullptr)
+  {
+    return insert(p, hint_cell(hint), could_lock_zone);
+  }
+  // CGAL's insert after locate(p, lt, li, lj, ...): a point located at a
+  // vertex is that vertex; otherwise the walk starts at c, where p is.
+  Vertex_handle insert(const Point& p, Locate_type lt, Cell_handle c, int li, int lj,
+                       bool* could_lock_zone = nullptr)
+  {
+    (void)lj;
+    if(dimension() == 3 && lt == VERTEX) {
+      if(could_lock_zone) *could_lock_zone = true;
+      return c->vertex(li);
+    }
+    return insert(p, c, could_lock_zone);
+  }
+
+  // The cells incident to the vertex of p after its insertion, as CGAL: for
+  // a new vertex, the kernel's Delaunay ball; for a point already there, the
+  // cells around that vertex.  Below dimension 3 nothing is written (this
+  // package stores no lower-dimensional cells).
+  template <class OutputItCells>
+  Vertex_handle insert_and_give_new_cells(const Point& p, OutputItCells fit, Cell_handle start = Cell_handle())
+  {
+    std::vector<Tet_id> ball;
+    const Vertex_handle v = insert_from(p, start, ball);
+    give_new_cells(v, ball, fit);
+    return v;
+  }
+  template <class OutputItCells>
+  Vertex_handle insert_and_give_new_cells(const Point& p, OutputItCells fit, Vertex_handle hint)
+  {
+    return insert_and_give_new_cells(p, fit, hint_cell(hint));
+  }
+  template <class OutputItCells>
+  Vertex_handle insert_and_give_new_cells(const Point& p, Locate_type lt, Cell_handle c, int li, int lj,
+                                          OutputItCells fit)
+  {
+    if(dimension() == 3 && lt == VERTEX) {
+      const Vertex_handle v = c->vertex(li);
+      give_new_cells(v, std::vector<Tet_id>(), fit);
+      return v;
+    }
+    (void)lj;
+    return insert_and_give_new_cells(p, fit, c);
+  }
+
+  // CGAL's insert_in_hole (dimension 3): the cells of [cells_begin,
+  // cells_end), distinct and forming a hole star-shaped from p (such as the
+  // conflict zone of find_conflicts), are replaced by the new vertex of p
+  // joined to the hole's boundary facets, with the kernel's Delaunay ball
+  // step.  (begin, i) is a boundary facet of the hole, as in CGAL; the ball
+  // step finds the boundary itself.  Preconditions as CGAL's (unchecked):
+  // p is no vertex and the hole is star-shaped from it.
+  template <class CellIt>
+  Vertex_handle insert_in_hole(const Point& p, CellIt cells_begin, CellIt cells_end, Cell_handle begin, int i)
+  {
+    CGAL_precondition(dimension() == 3);
+    CGAL_precondition(begin != Cell_handle() && i >= 0 && i < 4);
+    (void)begin;
+    (void)i;
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    std::vector<Tet_id> hole, ball;
+    for(; cells_begin != cells_end; ++cells_begin) {
+      const Cell_handle c = *cells_begin;
+      hole.push_back(c->id());
+    }
+    const Vertex_id v = core_.insert_in_hole(xyz, hole.data(), hole.size(), ball);
+    after_single_insertion(ball);
+    return Vertex_handle(this, v);
+  }
+
+  // ---------------------------------------------------------------- conflict zone (dimension 3)
+  // CGAL's find_conflicts: c must be in conflict with p (e.g. the cell of
+  // locate(p) when p is no vertex).  Writes the boundary facets (c', i) with
+  // c' in conflict and c'->neighbor(i) not, the cells in conflict, and with
+  // the third iterator each facet between two cells in conflict once.  The
+  // test is the insertion's own (CGAL's perturbed in-sphere), so the zone is
+  // exactly CGAL's; only the order of the output differs.  The triangulation
+  // is left unchanged (see Conflict_zone.h).
+  template <class OutputIteratorBoundaryFacets, class OutputIteratorCells, class OutputIteratorInternalFacets>
+  Triple<OutputIteratorBoundaryFacets, OutputIteratorCells, OutputIteratorInternalFacets>
+  find_conflicts(const Point& p, Cell_handle c, OutputIteratorBoundaryFacets bfit, OutputIteratorCells cit,
+                 OutputIteratorInternalFacets ifit, bool* could_lock_zone = nullptr) const
+  {
+    CGAL_precondition(dimension() == 3);
+    if(could_lock_zone) *could_lock_zone = true;
+    const double q[3] = {p.x(), p.y(), p.z()};
+    Fast_Delaunay_triangulation_3_internal::Conflict_zone zone;
+    Fast_Delaunay_triangulation_3_internal::find_conflict_zone(
+        core_.mesh, c->id(), q, !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value, zone);
+    for(auto code : zone.boundary) *bfit++ = facet_of_code(code);
+    for(Tet_id t : zone.cells) *cit++ = Cell_handle(this, t);
+    for(auto code : zone.internal) *ifit++ = facet_of_code(code);
+    return make_triple(bfit, cit, ifit);
+  }
+  template <class OutputIteratorBoundaryFacets, class OutputIteratorCells>
+  std::pair<OutputIteratorBoundaryFacets, OutputIteratorCells>
+  find_conflicts(const Point& p, Cell_handle c, OutputIteratorBoundaryFacets bfit, OutputIteratorCells cit,
+                 bool* could_lock_zone = nullptr) const
+  {
+    const Triple<OutputIteratorBoundaryFacets, OutputIteratorCells, Emptyset_iterator> t =
+        find_conflicts(p, c, bfit, cit, Emptyset_iterator(), could_lock_zone);
+    return std::make_pair(t.first, t.second);
+  }
+  // The vertices of the boundary facets of the conflict zone, each once, in
+  // increasing handle order (the infinite vertex first when on the boundary);
+  // CGAL writes the same set in its own handle order.
+  template <class OutputIterator>
+  OutputIterator vertices_on_conflict_zone_boundary(const Point& p, Cell_handle c, OutputIterator res) const
+  {
+    std::vector<Facet> facets;
+    find_conflicts(p, c, std::back_inserter(facets), Emptyset_iterator());
+    std::vector<Vertex_handle> vertices;
+    for(const Facet& f : facets)
+      for(int k = 1; k < 4; ++k) vertices.push_back(f.first->vertex((f.second + k) & 3));
+    std::sort(vertices.begin(), vertices.end(), [](Vertex_handle a, Vertex_handle b) {
+      return handle_order(a) < handle_order(b);
+    });
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return std::copy(vertices.begin(), vertices.end(), res);
+  }
+  // CGAL's deprecated name of vertices_on_conflict_zone_boundary.
+  template <class OutputIterator>
+  OutputIterator vertices_in_conflict(const Point& p, Cell_handle c, OutputIterator res) const
+  {
+    return vertices_on_conflict_zone_boundary(p, c, res);
+  }
 
   // ---------------------------------------------------------------- access
   const Geom_traits& geom_traits() const { return traits_; }
@@ -842,6 +982,57 @@ private:
 #else
     return 1;
 #endif
+  }
+
+  // Dimension 3: the kernel's insertion from `start`; below, insert(p).
+  Vertex_handle insert_from(const Point& p, Cell_handle start, std::vector<Tet_id>& ball)
+  {
+    ball.clear();
+    if(dimension() < 3) return insert(p);
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    const Vertex_id v = core_.insert_one_from(xyz, start ? start->id() : Tet_id(-1), ball);
+    after_single_insertion(ball);
+    return Vertex_handle(this, v);
+  }
+  // Every vertex of a deleted cell is a vertex of the ball (a Delaunay
+  // insertion removes no vertex), so pointing the vertices of the ball at it
+  // repairs the v->cell() cache at the cost of the ball, and the
+  // `v = insert(p, v)` idiom never rebuilds it.
+  void after_single_insertion(const std::vector<Tet_id>& ball)
+  {
+    vertex_infos_.resize(number_of_vertices());
+    if(incident_cells_.empty()) return;
+    incident_cells_.resize(number_of_vertices());
+    for(Tet_id t : ball)
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_id w = core_.mesh.vertex(t, i);
+        if(w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[w] = t;
+      }
+  }
+  Cell_handle hint_cell(Vertex_handle hint) const
+  {
+    return hint == Vertex_handle() || dimension() < 3 ? Cell_handle() : hint->cell();
+  }
+  template <class OutputItCells>
+  void give_new_cells(Vertex_handle v, const std::vector<Tet_id>& ball, OutputItCells& fit) const
+  {
+    if(dimension() < 3) return;
+    if(ball.empty()) {
+      fit = incident_cells(v, fit);
+      return;
+    }
+    for(Tet_id t : ball) *fit++ = Cell_handle(this, t);
+  }
+  Facet facet_of_code(std::uint64_t code) const
+  {
+    return Facet(Cell_handle(this, static_cast<Tet_id>(code >> 2)), static_cast<int>(code & 3));
+  }
+  // The infinite vertex first, then by id (the order of handles in CGAL's
+  // containers: the infinite vertex is created first).
+  static std::uint64_t handle_order(Vertex_handle v)
+  {
+    return v->id() == Fast_Delaunay_triangulation_3_internal::ghost_vertex ? 0 : std::uint64_t(v->id()) + 1;
   }
 
   void cells_around(Vertex_handle v, std::vector<Tet_id>& cells) const
