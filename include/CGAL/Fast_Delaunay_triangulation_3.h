@@ -79,6 +79,9 @@ public:
   typedef typename Gt::Segment_3 Segment;
   typedef typename Gt::Triangle_3 Triangle;
   typedef typename Gt::Tetrahedron_3 Tetrahedron;
+  typedef typename Gt::Line_3 Line;
+  typedef typename Gt::Ray_3 Ray;
+  typedef typename Gt::Object_3 Object;
   typedef std::size_t size_type;
   typedef std::ptrdiff_t difference_type;
 
@@ -754,6 +757,144 @@ public:
   {
     int i, j, k, l;
     return is_cell(u, v, w, t, c, i, j, k, l);
+  }
+
+  // ---------------------------------------------------------------- Voronoi duals and Gabriel (dimension 3)
+  // CGAL's Delaunay_triangulation_3 semantics, with Gt's constructions and
+  // predicates on the cells' points in this triangulation's vertex order.
+  // CGAL numbers the vertices of a cell differently, so a construction may
+  // differ from CGAL's in its last bits (a circumcenter is computed from its
+  // first point); predicates give the same answers.
+  Point dual(Cell_handle c) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c));
+    return traits_.construct_circumcenter_3_object()(point(c, 0), point(c, 1), point(c, 2), point(c, 3));
+  }
+  Object dual(const Facet& f) const { return dual(f.first, f.second); }
+  // The Voronoi edge of a finite facet: the segment between the duals of its
+  // two cells (possibly of length 0), or for a hull facet the ray from the
+  // dual of its finite cell, away from that cell, along the facet's
+  // equidistant line.
+  Object dual(Cell_handle c, int i) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
+    const Cell_handle n = c->neighbor(i);
+    if(!is_infinite(c) && !is_infinite(n))
+      return traits_.construct_object_3_object()(traits_.construct_segment_3_object()(dual(c), dual(n)));
+    const Cell_handle finite = is_infinite(c) ? n : c;
+    const int in = is_infinite(c) ? mirror_index(c, i) : i;
+    // The facet's vertices ordered so that its equidistant line leaves the
+    // finite cell: the even permutations start at in + 1, the odd ones need
+    // their first two vertices swapped.
+    int k[3] = {(in + 1) & 3, (in + 2) & 3, (in + 3) & 3};
+    if(in & 1) std::swap(k[0], k[1]);
+    const Line l =
+        traits_.construct_equidistant_line_3_object()(point(finite, k[0]), point(finite, k[1]), point(finite, k[2]));
+    return traits_.construct_object_3_object()(traits_.construct_ray_3_object()(dual(finite), l));
+  }
+  // The line that supports dual(c, i), through facet i's vertices in c's order.
+  Line dual_support(Cell_handle c, int i) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
+    return traits_.construct_equidistant_line_3_object()(point(c, (i + 1) & 3), point(c, (i + 2) & 3),
+                                                         point(c, (i + 3) & 3));
+  }
+
+  // A facet (an edge) is Gabriel when no vertex lies strictly inside its
+  // smallest circumscribed sphere; only the vertices opposite it (around it)
+  // can, so only those are tested.
+  bool is_Gabriel(const Facet& f) const { return is_Gabriel(f.first, f.second); }
+  bool is_Gabriel(Cell_handle c, int i) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
+    const auto side = traits_.side_of_bounded_sphere_3_object();
+    const Point a = point(c, (i + 1) & 3), b = point(c, (i + 2) & 3), d = point(c, (i + 3) & 3);
+    for(const Vertex_handle v : {c->vertex(i), mirror_vertex(c, i)})
+      if(!is_infinite(v) && side(a, b, d, v->point()) == ON_BOUNDED_SIDE) return false;
+    return true;
+  }
+  bool is_Gabriel(const Edge& e) const { return is_Gabriel(e.first, e.second, e.third); }
+  bool is_Gabriel(Cell_handle c, int i, int j) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c, i, j));
+    const auto side = traits_.side_of_bounded_sphere_3_object();
+    const Vertex_handle u = c->vertex(i), v = c->vertex(j);
+    const Point a = u->point(), b = v->point();
+    Cell_circulator cells = incident_cells(c, i, j), done = cells;
+    do {
+      const Cell_handle x = cells;
+      for(int k = 0; k < 4; ++k) {
+        const Vertex_handle w = x->vertex(k);
+        if(w != u && w != v && !is_infinite(w) && side(a, b, w->point()) == ON_BOUNDED_SIDE) return false;
+      }
+    } while(++cells != done);
+    return true;
+  }
+
+  // Where p, in the plane of facet i of c, lies with respect to the facet's
+  // circumcircle; with perturb, never ON_BOUNDARY: CGAL's symbolic
+  // perturbation decides.  For a facet through the infinite vertex, CGAL's
+  // documented meaning: in the plane of the cell's finite facet, inside is
+  // the open half-plane beyond the facet's finite edge, and on the edge's
+  // line the segment decides (inside strictly between its ends, boundary at
+  // an end).  (CGAL 5.5's code takes the finite-facet branch for those
+  // facets and the other for the finite facet of an infinite cell; finite
+  // facets agree with it exactly.)
+  Bounded_side side_of_circle(const Facet& f, const Point& p, bool perturb = false) const
+  {
+    return side_of_circle(f.first, f.second, p, perturb);
+  }
+  Bounded_side side_of_circle(Cell_handle c, int i, const Point& p, bool perturb = false) const
+  {
+    CGAL_precondition(dimension() == 3 && i >= 0 && i < 4);
+    if(!is_infinite(c) || i == 3) {
+      const int i0 = i > 0 ? 0 : 1, i1 = i > 1 ? 1 : 2, i2 = i > 2 ? 2 : 3;
+      const Point &a = point(c, i0), &b = point(c, i1), &d = point(c, i2);
+      CGAL_precondition(traits_.coplanar_3_object()(a, b, d, p));
+      if(!perturb) return traits_.coplanar_side_of_bounded_circle_3_object()(a, b, d, p);
+      const double pa[3] = {a.x(), a.y(), a.z()}, pb[3] = {b.x(), b.y(), b.z()}, pd[3] = {d.x(), d.y(), d.z()},
+                   q[3] = {p.x(), p.y(), p.z()};
+      return static_cast<Bounded_side>(
+          Fast_Delaunay_triangulation_3_internal::perturbed_coplanar_side_of_bounded_circle(pa, pb, pd, q));
+    }
+    // Facet i of a ghost cell: the infinite vertex (slot 3) and the edge (v1, v2).
+    const Point v1 = point(c, next_around_edge(3, i)), v2 = point(c, next_around_edge(i, 3));
+    const auto coplanar_orientation = traits_.coplanar_orientation_3_object();
+    const int o = static_cast<int>(coplanar_orientation(v1, v2, point(c, i))) *
+                  static_cast<int>(coplanar_orientation(v1, v2, p));
+    if(o != 0) return static_cast<Bounded_side>(-o);
+    if(traits_.collinear_are_strictly_ordered_along_line_3_object()(v1, p, v2)) return ON_BOUNDED_SIDE;
+    return p == v1 || p == v2 ? ON_BOUNDARY : ON_UNBOUNDED_SIDE;
+  }
+
+  // Triangulation_3::side_of_tetrahedron: p against the positively oriented
+  // tetrahedron (p0, p1, p2, p3); lt, i, j as side_of_cell.
+  Bounded_side side_of_tetrahedron(const Point& p, const Point& p0, const Point& p1, const Point& p2,
+                                   const Point& p3, Locate_type& lt, int& i, int& j) const
+  {
+    const auto orientation = traits_.orientation_3_object();
+    CGAL_precondition(orientation(p0, p1, p2, p3) == POSITIVE);
+    const Orientation o[4] = {orientation(p, p1, p2, p3), orientation(p0, p, p2, p3), orientation(p0, p1, p, p3),
+                              orientation(p0, p1, p2, p)};
+    int on = 0;
+    for(Orientation x : o) {
+      if(x == NEGATIVE) {
+        lt = OUTSIDE_CONVEX_HULL;
+        return ON_UNBOUNDED_SIDE;
+      }
+      on += x == ZERO ? 1 : 0;
+    }
+    auto first = [&o](Orientation x) { return o[0] == x ? 0 : o[1] == x ? 1 : o[2] == x ? 2 : 3; };
+    switch(on) {
+    case 0: lt = CELL; return ON_BOUNDED_SIDE;
+    case 1: lt = FACET; i = first(ZERO); return ON_BOUNDARY;
+    case 2: // on the edge of the two vertices whose facets do not hold p
+      lt = EDGE;
+      i = first(POSITIVE);
+      j = o[3] == POSITIVE ? 3 : o[2] == POSITIVE ? 2 : 1;
+      return ON_BOUNDARY;
+    default: lt = VERTEX; i = first(POSITIVE); return ON_BOUNDARY;
+    }
   }
 
   // ---------------------------------------------------------------- adjacency (dimension 3)
