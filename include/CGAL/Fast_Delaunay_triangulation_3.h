@@ -15,6 +15,7 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Conflict_zone.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Equality.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
@@ -23,6 +24,7 @@
 #include <CGAL/Default.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Iterator_range.h>
+#include <CGAL/Location_policy.h>
 #include <CGAL/Triangulation_utils_3.h>
 #include <CGAL/enum.h>
 #include <CGAL/iterator.h>
@@ -52,13 +54,32 @@ template <class Tds, class = void>
 struct Concurrency_of { typedef Sequential_tag type; };
 template <class Tds>
 struct Concurrency_of<Tds, std::void_t<typename Tds::Concurrency_tag>> { typedef typename Tds::Concurrency_tag type; };
+
+// CGAL's spellings put a location policy second (Delaunay_triangulation_3<K,
+// Fast_location>) or third (<K, Tds, Fast_location>).  The data structure
+// argument is Default in the first case.
+template <class T>
+struct Is_location_policy : std::false_type {};
+template <class Tag>
+struct Is_location_policy<CGAL::Location_policy<Tag>> : std::true_type {};
+
+template <class Tds_, class Location_policy_>
+struct Template_arguments
+{
+  static constexpr bool policy_second = Is_location_policy<Tds_>::value;
+  typedef typename std::conditional<policy_second, Default, Tds_>::type Tds;
+  typedef typename std::conditional<policy_second, Tds_,
+                                    typename Default::Get<Location_policy_, Compact_location>::type>::type
+      Location_policy;
+};
 } // namespace Fast_Delaunay_triangulation_3_internal
 
 template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
-          class Location_policy = Default, class Lock_data_structure_ = Default>
+          class Location_policy_ = Default, class Lock_data_structure_ = Default>
 class Fast_Delaunay_triangulation_3 : public Triangulation_utils_3
 {
-  typedef Fast_Delaunay_triangulation_3<Gt, Tds_, Location_policy, Lock_data_structure_> Self;
+  typedef Fast_Delaunay_triangulation_3<Gt, Tds_, Location_policy_, Lock_data_structure_> Self;
+  typedef Fast_Delaunay_triangulation_3_internal::Template_arguments<Tds_, Location_policy_> Arguments;
   typedef Fast_Delaunay_triangulation_3_internal::Triangulation_core Core;
   typedef Fast_Delaunay_triangulation_3_internal::Flat_storage Flat_storage;
   typedef Fast_Delaunay_triangulation_3_internal::Vertex_id Vertex_id;
@@ -73,7 +94,12 @@ public:
   // the parallel engine on the threads of the caller's TBB arena, as CGAL's
   // parallel triangulation does.  The lock data structure is accepted for
   // compatibility and not needed: the engine partitions space instead.
-  typedef typename Fast_Delaunay_triangulation_3_internal::Concurrency_of<Tds_>::type Concurrency_tag;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Concurrency_of<typename Arguments::Tds>::type Concurrency_tag;
+  // Fast_location or Compact_location, as given (Compact_location by
+  // default, as CGAL): accepted for the spelling only.  Both locate and
+  // insert with the kernel's visibility walk from the last insertion or the
+  // hint, which is already the fast path; there is no hierarchy to build.
+  typedef typename Arguments::Location_policy Location_policy;
   typedef typename Default::Get<Lock_data_structure_, void>::type Lock_data_structure;
   typedef typename Gt::Point_3 Point;
   typedef typename Gt::Segment_3 Segment;
@@ -91,8 +117,8 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Cell, Tet_id> Cell_handle;
   // Info of Triangulation_vertex_base_with_info_3 / Triangulation_cell_base_with_info_3
   // in the data structure argument (void without): v->info(), c->info().
-  typedef typename Fast_Delaunay_triangulation_3_internal::Vertex_info_of<Tds_>::type Vertex_info;
-  typedef typename Fast_Delaunay_triangulation_3_internal::Cell_info_of<Tds_>::type Cell_info;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Vertex_info_of<typename Arguments::Tds>::type Vertex_info;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Cell_info_of<typename Arguments::Tds>::type Cell_info;
   typedef std::pair<Cell_handle, int> Facet;
   typedef CGAL::Triple<Cell_handle, int, int> Edge;
 
@@ -1292,6 +1318,50 @@ private:
   Fast_Delaunay_triangulation_3_internal::Vertex_infos<Vertex_info> vertex_infos_;
   Fast_Delaunay_triangulation_3_internal::Cell_infos<Cell_info> cell_infos_;
 };
+
+// Equality as CGAL's operator== on Triangulation_3 defines it: the two
+// triangulations are isomorphic by the map that sends each vertex to the
+// vertex with the same point (same dimension, same vertices, same cells as
+// point sets).  Dimension 3 compares the finite cells (the infinite ones
+// follow from the hull).  Below it this package stores no cells; the
+// vertices decide, because a Delaunay triangulation with CGAL's symbolic
+// perturbation is the only one of its points in every dimension.
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator==(const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a,
+                const Fast_Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b)
+{
+  return Fast_Delaunay_triangulation_3_internal::same_triangulation(a, b);
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator!=(const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a,
+                const Fast_Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b)
+{
+  return !(a == b);
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator==(const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a,
+                const Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b)
+{
+  return Fast_Delaunay_triangulation_3_internal::same_triangulation(a, b);
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator==(const Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b,
+                const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a)
+{
+  return a == b;
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator!=(const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a,
+                const Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b)
+{
+  return !(a == b);
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator!=(const Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b,
+                const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a)
+{
+  return !(a == b);
+}
 
 } // namespace CGAL
 
