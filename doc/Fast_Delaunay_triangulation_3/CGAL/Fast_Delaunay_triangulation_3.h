@@ -36,7 +36,9 @@ arguments of `Delaunay_triangulation_3`, and is ignored: the combinatorics
 always live in the package's flat arrays. Default: `Default`.
 
 \tparam Location_policy is accepted and ignored (insertion always walks from
-the last inserted point). Default: `Default`.
+the last inserted point or the hint): `Fast_location` or `Compact_location`,
+given third or, as in `Delaunay_triangulation_3<K, Fast_location>`, second;
+the typedef `Location_policy` names it. Default: `Default`.
 
 \tparam Lock_data_structure_ is accepted and ignored: insertion is sequential.
 Default: `Default`.
@@ -44,7 +46,7 @@ Default: `Default`.
 <b>Differences from `Delaunay_triangulation_3`</b>
 
 - Only insertion is provided: there is no `remove()`, `move()`, `locate()`,
-  `nearest_vertex()`, `find_conflicts()`, `side_of_sphere()`, `dual()`,
+  `nearest_vertex()`, `side_of_sphere()`,
   stream operators, circulators (`incident_cells()`, `incident_edges()`,
   `Cell_circulator`, ...), `is_edge()` / `is_facet()` / `is_cell()`, and no
   insertion of points with an info. The enum `Locate_type` is declared, but no
