@@ -23,29 +23,12 @@ typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
 namespace {
 
-const Point_key infinite_key(std::numeric_limits<double>::infinity(), 0, 0);
-
-template <class Tr>
-Point_key key_of(const Tr& tr, typename Tr::Vertex_handle v)
-{
-  return tr.is_infinite(v) ? infinite_key : point_key(v->point());
-}
-
-template <class Tr>
-std::array<Point_key, 4> cell_key(const Tr& tr, typename Tr::Cell_handle c)
-{
-  std::array<Point_key, 4> k;
-  for(int i = 0; i < 4; ++i) k[i] = key_of(tr, c->vertex(i));
-  std::sort(k.begin(), k.end());
-  return k;
-}
-
 template <class Tr>
 std::array<Point_key, 3> facet_key(const Tr& tr, const typename Tr::Facet& f)
 {
   std::array<Point_key, 3> k;
   for(int i = 0, j = 0; i < 4; ++i)
-    if(i != f.second) k[j++] = key_of(tr, f.first->vertex(i));
+    if(i != f.second) k[j++] = vertex_point_key(tr, f.first->vertex(i));
   std::sort(k.begin(), k.end());
   return k;
 }
@@ -88,13 +71,13 @@ Zone conflict_zone(const Tr& tr, const Point& p)
   std::set<Cell_handle> in_zone(cells.begin(), cells.end());
   EXPECT_EQ(in_zone.size(), cells.size()) << "a cell reported twice";
   for(Cell_handle x : cells) {
-    z.cells.push_back(cell_key(tr, x));
+    z.cells.push_back(cell_point_keys(tr, x));
     EXPECT_EQ(tr.side_of_sphere(x, p, true), CGAL::ON_BOUNDED_SIDE);
   }
   for(const Facet& f : boundary) {
     EXPECT_EQ(in_zone.count(f.first), 1u);
     EXPECT_EQ(in_zone.count(f.first->neighbor(f.second)), 0u);
-    z.boundary.emplace_back(facet_key(tr, f), cell_key(tr, f.first));
+    z.boundary.emplace_back(facet_key(tr, f), cell_point_keys(tr, f.first));
   }
   for(const Facet& f : internal) {
     EXPECT_EQ(in_zone.count(f.first), 1u);
@@ -103,7 +86,7 @@ Zone conflict_zone(const Tr& tr, const Point& p)
   }
   // Euler on the zone, a topological ball: 4 C = 2 I + B.
   EXPECT_EQ(4 * cells.size(), 2 * internal.size() + boundary.size());
-  for(Vertex_handle v : vertices) z.boundary_vertices.push_back(key_of(tr, v));
+  for(Vertex_handle v : vertices) z.boundary_vertices.push_back(vertex_point_key(tr, v));
   std::sort(z.cells.begin(), z.cells.end());
   std::sort(z.boundary.begin(), z.boundary.end());
   std::sort(z.internal.begin(), z.internal.end());
@@ -317,8 +300,8 @@ TEST(HintedInsertion, NewCellsAreCgals)
     fast.insert_and_give_new_cells(more[i], std::back_inserter(ours));
     cgal.insert_and_give_new_cells(more[i], std::back_inserter(theirs));
     std::vector<std::array<Point_key, 4>> a, b;
-    for(auto c : ours) a.push_back(cell_key(fast, c));
-    for(auto c : theirs) b.push_back(cell_key(cgal, c));
+    for(auto c : ours) a.push_back(cell_point_keys(fast, c));
+    for(auto c : theirs) b.push_back(cell_point_keys(cgal, c));
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
     EXPECT_TRUE(a == b) << "new cells of (" << more[i] << ")";

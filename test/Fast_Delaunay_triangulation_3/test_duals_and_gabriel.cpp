@@ -26,23 +26,6 @@ typedef K::Vector_3 Vector;
 
 namespace {
 
-const Point_key infinite_key(std::numeric_limits<double>::infinity(), 0, 0);
-
-template <class Tr>
-Point_key key_of(const Tr& tr, typename Tr::Vertex_handle v)
-{
-  return tr.is_infinite(v) ? infinite_key : point_key(v->point());
-}
-
-template <class Tr>
-std::array<Point_key, 4> cell_key(const Tr& tr, typename Tr::Cell_handle c)
-{
-  std::array<Point_key, 4> k;
-  for(int i = 0; i < 4; ++i) k[i] = key_of(tr, c->vertex(i));
-  std::sort(k.begin(), k.end());
-  return k;
-}
-
 // Our cell with the points of CGAL's cell c, and our index of c's vertex i.
 struct Matcher
 {
@@ -52,19 +35,19 @@ struct Matcher
 
   Matcher(const Fast_dt& f, const Cgal_dt& c) : fast(f), cgal(c)
   {
-    for(auto x = fast.all_cells_begin(); x != fast.all_cells_end(); ++x) cells[cell_key(fast, x)] = x;
+    for(auto x = fast.all_cells_begin(); x != fast.all_cells_end(); ++x) cells[cell_point_keys(fast, x)] = x;
   }
   Fast_dt::Cell_handle cell(Cgal_dt::Cell_handle c) const
   {
-    const auto it = cells.find(cell_key(cgal, c));
+    const auto it = cells.find(cell_point_keys(cgal, c));
     EXPECT_TRUE(it != cells.end()) << "a CGAL cell has no match";
     return it->second;
   }
   int index(Fast_dt::Cell_handle ours, Cgal_dt::Cell_handle c, int i) const
   {
-    const Point_key k = key_of(cgal, c->vertex(i));
+    const Point_key k = vertex_point_key(cgal, c->vertex(i));
     for(int j = 0; j < 4; ++j)
-      if(key_of(fast, ours->vertex(j)) == k) return j;
+      if(vertex_point_key(fast, ours->vertex(j)) == k) return j;
     ADD_FAILURE() << "vertex not found";
     return 0;
   }
