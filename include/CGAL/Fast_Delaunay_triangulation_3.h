@@ -14,6 +14,8 @@
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Conflict_zone.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Equality.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
@@ -24,8 +26,10 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Iterator_range.h>
+#include <CGAL/Location_policy.h>
 #include <CGAL/Triangulation_utils_3.h>
 #include <CGAL/enum.h>
+#include <CGAL/iterator.h>
 #include <CGAL/utility.h>
 #include <CGAL/tags.h>
 
@@ -35,6 +39,7 @@
 #endif
 
 #include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <iterator>
 #include <string>
@@ -51,13 +56,32 @@ template <class Tds, class = void>
 struct Concurrency_of { typedef Sequential_tag type; };
 template <class Tds>
 struct Concurrency_of<Tds, std::void_t<typename Tds::Concurrency_tag>> { typedef typename Tds::Concurrency_tag type; };
+
+// CGAL's spellings put a location policy second (Delaunay_triangulation_3<K,
+// Fast_location>) or third (<K, Tds, Fast_location>).  The data structure
+// argument is Default in the first case.
+template <class T>
+struct Is_location_policy : std::false_type {};
+template <class Tag>
+struct Is_location_policy<CGAL::Location_policy<Tag>> : std::true_type {};
+
+template <class Tds_, class Location_policy_>
+struct Template_arguments
+{
+  static constexpr bool policy_second = Is_location_policy<Tds_>::value;
+  typedef typename std::conditional<policy_second, Default, Tds_>::type Tds;
+  typedef typename std::conditional<policy_second, Tds_,
+                                    typename Default::Get<Location_policy_, Compact_location>::type>::type
+      Location_policy;
+};
 } // namespace Fast_Delaunay_triangulation_3_internal
 
 template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
-          class Location_policy = Default, class Lock_data_structure_ = Default>
+          class Location_policy_ = Default, class Lock_data_structure_ = Default>
 class Fast_Delaunay_triangulation_3 : public Triangulation_utils_3
 {
-  typedef Fast_Delaunay_triangulation_3<Gt, Tds_, Location_policy, Lock_data_structure_> Self;
+  typedef Fast_Delaunay_triangulation_3<Gt, Tds_, Location_policy_, Lock_data_structure_> Self;
+  typedef Fast_Delaunay_triangulation_3_internal::Template_arguments<Tds_, Location_policy_> Arguments;
   typedef Fast_Delaunay_triangulation_3_internal::Triangulation_core Core;
   typedef Fast_Delaunay_triangulation_3_internal::Flat_storage Flat_storage;
   typedef Fast_Delaunay_triangulation_3_internal::Vertex_id Vertex_id;
@@ -72,12 +96,20 @@ public:
   // the parallel engine on the threads of the caller's TBB arena, as CGAL's
   // parallel triangulation does.  The lock data structure is accepted for
   // compatibility and not needed: the engine partitions space instead.
-  typedef typename Fast_Delaunay_triangulation_3_internal::Concurrency_of<Tds_>::type Concurrency_tag;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Concurrency_of<typename Arguments::Tds>::type Concurrency_tag;
+  // Fast_location or Compact_location, as given (Compact_location by
+  // default, as CGAL): accepted for the spelling only.  Both locate and
+  // insert with the kernel's visibility walk from the last insertion or the
+  // hint, which is already the fast path; there is no hierarchy to build.
+  typedef typename Arguments::Location_policy Location_policy;
   typedef typename Default::Get<Lock_data_structure_, void>::type Lock_data_structure;
   typedef typename Gt::Point_3 Point;
   typedef typename Gt::Segment_3 Segment;
   typedef typename Gt::Triangle_3 Triangle;
   typedef typename Gt::Tetrahedron_3 Tetrahedron;
+  typedef typename Gt::Line_3 Line;
+  typedef typename Gt::Ray_3 Ray;
+  typedef typename Gt::Object_3 Object;
   typedef std::size_t size_type;
   typedef std::ptrdiff_t difference_type;
 
@@ -87,8 +119,8 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Cell, Tet_id> Cell_handle;
   // Info of Triangulation_vertex_base_with_info_3 / Triangulation_cell_base_with_info_3
   // in the data structure argument (void without): v->info(), c->info().
-  typedef typename Fast_Delaunay_triangulation_3_internal::Vertex_info_of<Tds_>::type Vertex_info;
-  typedef typename Fast_Delaunay_triangulation_3_internal::Cell_info_of<Tds_>::type Cell_info;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Vertex_info_of<typename Arguments::Tds>::type Vertex_info;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Cell_info_of<typename Arguments::Tds>::type Cell_info;
   typedef std::pair<Cell_handle, int> Facet;
   typedef CGAL::Triple<Cell_handle, int, int> Edge;
 
@@ -427,8 +459,144 @@ public:
     vertex_infos_.resize(number_of_vertices());
     return Vertex_handle(this, v);
   }
-  Vertex_handle insert(const Point& p, Cell_handle) { return insert(p); }
-  Vertex_handle insert(const Point& p, Vertex_handle) { return insert(p); }
+  // CGAL's insert(p, hint): in dimension 3 the kernel's walk starts at the
+  // hint (a cell, or a cell of the vertex); below, as insert(p).  The lock
+  // zone of CGAL's parallel insertion is always granted: nothing is locked.
+  Vertex_handle insert(const Point& p, Cell_handle start, bool* could_lock_zone = nullptr)
+  {
+    if(could_lock_zone) *could_lock_zone = true;
+    std::vector<Tet_id> ball;
+    return insert_from(p, start, ball);
+  }
+  Vertex_handle insert(const Point& p, Vertex_handle hint, bool* could_lock_zone = nullptr)
+  {
+    return insert(p, hint_cell(hint), could_lock_zone);
+  }
+  // CGAL's insert after locate(p, lt, li, lj, ...): a point located at a
+  // vertex is that vertex; otherwise the walk starts at c, where p is.
+  Vertex_handle insert(const Point& p, Locate_type lt, Cell_handle c, int li, int lj,
+                       bool* could_lock_zone = nullptr)
+  {
+    (void)lj;
+    if(dimension() == 3 && lt == VERTEX) {
+      if(could_lock_zone) *could_lock_zone = true;
+      return c->vertex(li);
+    }
+    return insert(p, c, could_lock_zone);
+  }
+
+  // The cells incident to the vertex of p after its insertion, as CGAL: for
+  // a new vertex, the kernel's Delaunay ball; for a point already there, the
+  // cells around that vertex.  Below dimension 3 nothing is written (this
+  // package stores no lower-dimensional cells).
+  template <class OutputItCells>
+  Vertex_handle insert_and_give_new_cells(const Point& p, OutputItCells fit, Cell_handle start = Cell_handle())
+  {
+    std::vector<Tet_id> ball;
+    const Vertex_handle v = insert_from(p, start, ball);
+    give_new_cells(v, ball, fit);
+    return v;
+  }
+  template <class OutputItCells>
+  Vertex_handle insert_and_give_new_cells(const Point& p, OutputItCells fit, Vertex_handle hint)
+  {
+    return insert_and_give_new_cells(p, fit, hint_cell(hint));
+  }
+  template <class OutputItCells>
+  Vertex_handle insert_and_give_new_cells(const Point& p, Locate_type lt, Cell_handle c, int li, int lj,
+                                          OutputItCells fit)
+  {
+    if(dimension() == 3 && lt == VERTEX) {
+      const Vertex_handle v = c->vertex(li);
+      give_new_cells(v, std::vector<Tet_id>(), fit);
+      return v;
+    }
+    (void)lj;
+    return insert_and_give_new_cells(p, fit, c);
+  }
+
+  // CGAL's insert_in_hole (dimension 3): the cells of [cells_begin,
+  // cells_end), distinct and forming a hole star-shaped from p (such as the
+  // conflict zone of find_conflicts), are replaced by the new vertex of p
+  // joined to the hole's boundary facets, with the kernel's Delaunay ball
+  // step.  (begin, i) is a boundary facet of the hole, as in CGAL; the ball
+  // step finds the boundary itself.  Preconditions as CGAL's (unchecked):
+  // p is no vertex and the hole is star-shaped from it.
+  template <class CellIt>
+  Vertex_handle insert_in_hole(const Point& p, CellIt cells_begin, CellIt cells_end, Cell_handle begin, int i)
+  {
+    CGAL_precondition(dimension() == 3);
+    CGAL_precondition(begin != Cell_handle() && i >= 0 && i < 4);
+    (void)begin;
+    (void)i;
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    std::vector<Tet_id> hole, ball;
+    for(; cells_begin != cells_end; ++cells_begin) {
+      const Cell_handle c = *cells_begin;
+      hole.push_back(c->id());
+    }
+    const Vertex_id v = core_.insert_in_hole(xyz, hole.data(), hole.size(), ball);
+    after_single_insertion(ball);
+    return Vertex_handle(this, v);
+  }
+
+  // ---------------------------------------------------------------- conflict zone (dimension 3)
+  // CGAL's find_conflicts: c must be in conflict with p (e.g. the cell of
+  // locate(p) when p is no vertex).  Writes the boundary facets (c', i) with
+  // c' in conflict and c'->neighbor(i) not, the cells in conflict, and with
+  // the third iterator each facet between two cells in conflict once.  The
+  // test is the insertion's own (CGAL's perturbed in-sphere), so the zone is
+  // exactly CGAL's; only the order of the output differs.  The triangulation
+  // is left unchanged (see Conflict_zone.h).
+  template <class OutputIteratorBoundaryFacets, class OutputIteratorCells, class OutputIteratorInternalFacets>
+  Triple<OutputIteratorBoundaryFacets, OutputIteratorCells, OutputIteratorInternalFacets>
+  find_conflicts(const Point& p, Cell_handle c, OutputIteratorBoundaryFacets bfit, OutputIteratorCells cit,
+                 OutputIteratorInternalFacets ifit, bool* could_lock_zone = nullptr) const
+  {
+    CGAL_precondition(dimension() == 3);
+    if(could_lock_zone) *could_lock_zone = true;
+    const double q[3] = {p.x(), p.y(), p.z()};
+    Fast_Delaunay_triangulation_3_internal::Conflict_zone zone;
+    Fast_Delaunay_triangulation_3_internal::find_conflict_zone(
+        core_.mesh, c->id(), q, !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value, zone);
+    for(auto code : zone.boundary) *bfit++ = facet_of_code(code);
+    for(Tet_id t : zone.cells) *cit++ = Cell_handle(this, t);
+    for(auto code : zone.internal) *ifit++ = facet_of_code(code);
+    return make_triple(bfit, cit, ifit);
+  }
+  template <class OutputIteratorBoundaryFacets, class OutputIteratorCells>
+  std::pair<OutputIteratorBoundaryFacets, OutputIteratorCells>
+  find_conflicts(const Point& p, Cell_handle c, OutputIteratorBoundaryFacets bfit, OutputIteratorCells cit,
+                 bool* could_lock_zone = nullptr) const
+  {
+    const Triple<OutputIteratorBoundaryFacets, OutputIteratorCells, Emptyset_iterator> t =
+        find_conflicts(p, c, bfit, cit, Emptyset_iterator(), could_lock_zone);
+    return std::make_pair(t.first, t.second);
+  }
+  // The vertices of the boundary facets of the conflict zone, each once, in
+  // increasing handle order (the infinite vertex first when on the boundary);
+  // CGAL writes the same set in its own handle order.
+  template <class OutputIterator>
+  OutputIterator vertices_on_conflict_zone_boundary(const Point& p, Cell_handle c, OutputIterator res) const
+  {
+    std::vector<Facet> facets;
+    find_conflicts(p, c, std::back_inserter(facets), Emptyset_iterator());
+    std::vector<Vertex_handle> vertices;
+    for(const Facet& f : facets)
+      for(int k = 1; k < 4; ++k) vertices.push_back(f.first->vertex((f.second + k) & 3));
+    std::sort(vertices.begin(), vertices.end(), [](Vertex_handle a, Vertex_handle b) {
+      return handle_order(a) < handle_order(b);
+    });
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return std::copy(vertices.begin(), vertices.end(), res);
+  }
+  // CGAL's deprecated name of vertices_on_conflict_zone_boundary.
+  template <class OutputIterator>
+  OutputIterator vertices_in_conflict(const Point& p, Cell_handle c, OutputIterator res) const
+  {
+    return vertices_on_conflict_zone_boundary(p, c, res);
+  }
 
   // ---------------------------------------------------------------- access
   const Geom_traits& geom_traits() const { return traits_; }
@@ -664,6 +832,144 @@ public:
   {
     int i, j, k, l;
     return is_cell(u, v, w, t, c, i, j, k, l);
+  }
+
+  // ---------------------------------------------------------------- Voronoi duals and Gabriel (dimension 3)
+  // CGAL's Delaunay_triangulation_3 semantics, with Gt's constructions and
+  // predicates on the cells' points in this triangulation's vertex order.
+  // CGAL numbers the vertices of a cell differently, so a construction may
+  // differ from CGAL's in its last bits (a circumcenter is computed from its
+  // first point); predicates give the same answers.
+  Point dual(Cell_handle c) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c));
+    return traits_.construct_circumcenter_3_object()(point(c, 0), point(c, 1), point(c, 2), point(c, 3));
+  }
+  Object dual(const Facet& f) const { return dual(f.first, f.second); }
+  // The Voronoi edge of a finite facet: the segment between the duals of its
+  // two cells (possibly of length 0), or for a hull facet the ray from the
+  // dual of its finite cell, away from that cell, along the facet's
+  // equidistant line.
+  Object dual(Cell_handle c, int i) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
+    const Cell_handle n = c->neighbor(i);
+    if(!is_infinite(c) && !is_infinite(n))
+      return traits_.construct_object_3_object()(traits_.construct_segment_3_object()(dual(c), dual(n)));
+    const Cell_handle finite = is_infinite(c) ? n : c;
+    const int in = is_infinite(c) ? mirror_index(c, i) : i;
+    // The facet's vertices ordered so that its equidistant line leaves the
+    // finite cell: the even permutations start at in + 1, the odd ones need
+    // their first two vertices swapped.
+    int k[3] = {(in + 1) & 3, (in + 2) & 3, (in + 3) & 3};
+    if(in & 1) std::swap(k[0], k[1]);
+    const Line l =
+        traits_.construct_equidistant_line_3_object()(point(finite, k[0]), point(finite, k[1]), point(finite, k[2]));
+    return traits_.construct_object_3_object()(traits_.construct_ray_3_object()(dual(finite), l));
+  }
+  // The line that supports dual(c, i), through facet i's vertices in c's order.
+  Line dual_support(Cell_handle c, int i) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
+    return traits_.construct_equidistant_line_3_object()(point(c, (i + 1) & 3), point(c, (i + 2) & 3),
+                                                         point(c, (i + 3) & 3));
+  }
+
+  // A facet (an edge) is Gabriel when no vertex lies strictly inside its
+  // smallest circumscribed sphere; only the vertices opposite it (around it)
+  // can, so only those are tested.
+  bool is_Gabriel(const Facet& f) const { return is_Gabriel(f.first, f.second); }
+  bool is_Gabriel(Cell_handle c, int i) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
+    const auto side = traits_.side_of_bounded_sphere_3_object();
+    const Point a = point(c, (i + 1) & 3), b = point(c, (i + 2) & 3), d = point(c, (i + 3) & 3);
+    for(const Vertex_handle v : {c->vertex(i), mirror_vertex(c, i)})
+      if(!is_infinite(v) && side(a, b, d, v->point()) == ON_BOUNDED_SIDE) return false;
+    return true;
+  }
+  bool is_Gabriel(const Edge& e) const { return is_Gabriel(e.first, e.second, e.third); }
+  bool is_Gabriel(Cell_handle c, int i, int j) const
+  {
+    CGAL_precondition(dimension() == 3 && !is_infinite(c, i, j));
+    const auto side = traits_.side_of_bounded_sphere_3_object();
+    const Vertex_handle u = c->vertex(i), v = c->vertex(j);
+    const Point a = u->point(), b = v->point();
+    Cell_circulator cells = incident_cells(c, i, j), done = cells;
+    do {
+      const Cell_handle x = cells;
+      for(int k = 0; k < 4; ++k) {
+        const Vertex_handle w = x->vertex(k);
+        if(w != u && w != v && !is_infinite(w) && side(a, b, w->point()) == ON_BOUNDED_SIDE) return false;
+      }
+    } while(++cells != done);
+    return true;
+  }
+
+  // Where p, in the plane of facet i of c, lies with respect to the facet's
+  // circumcircle; with perturb, never ON_BOUNDARY: CGAL's symbolic
+  // perturbation decides.  For a facet through the infinite vertex, CGAL's
+  // documented meaning: in the plane of the cell's finite facet, inside is
+  // the open half-plane beyond the facet's finite edge, and on the edge's
+  // line the segment decides (inside strictly between its ends, boundary at
+  // an end).  (CGAL 5.5's code takes the finite-facet branch for those
+  // facets and the other for the finite facet of an infinite cell; finite
+  // facets agree with it exactly.)
+  Bounded_side side_of_circle(const Facet& f, const Point& p, bool perturb = false) const
+  {
+    return side_of_circle(f.first, f.second, p, perturb);
+  }
+  Bounded_side side_of_circle(Cell_handle c, int i, const Point& p, bool perturb = false) const
+  {
+    CGAL_precondition(dimension() == 3 && i >= 0 && i < 4);
+    if(!is_infinite(c) || i == 3) {
+      const int i0 = i > 0 ? 0 : 1, i1 = i > 1 ? 1 : 2, i2 = i > 2 ? 2 : 3;
+      const Point &a = point(c, i0), &b = point(c, i1), &d = point(c, i2);
+      CGAL_precondition(traits_.coplanar_3_object()(a, b, d, p));
+      if(!perturb) return traits_.coplanar_side_of_bounded_circle_3_object()(a, b, d, p);
+      const double pa[3] = {a.x(), a.y(), a.z()}, pb[3] = {b.x(), b.y(), b.z()}, pd[3] = {d.x(), d.y(), d.z()},
+                   q[3] = {p.x(), p.y(), p.z()};
+      return static_cast<Bounded_side>(
+          Fast_Delaunay_triangulation_3_internal::perturbed_coplanar_side_of_bounded_circle(pa, pb, pd, q));
+    }
+    // Facet i of a ghost cell: the infinite vertex (slot 3) and the edge (v1, v2).
+    const Point v1 = point(c, next_around_edge(3, i)), v2 = point(c, next_around_edge(i, 3));
+    const auto coplanar_orientation = traits_.coplanar_orientation_3_object();
+    const int o = static_cast<int>(coplanar_orientation(v1, v2, point(c, i))) *
+                  static_cast<int>(coplanar_orientation(v1, v2, p));
+    if(o != 0) return static_cast<Bounded_side>(-o);
+    if(traits_.collinear_are_strictly_ordered_along_line_3_object()(v1, p, v2)) return ON_BOUNDED_SIDE;
+    return p == v1 || p == v2 ? ON_BOUNDARY : ON_UNBOUNDED_SIDE;
+  }
+
+  // Triangulation_3::side_of_tetrahedron: p against the positively oriented
+  // tetrahedron (p0, p1, p2, p3); lt, i, j as side_of_cell.
+  Bounded_side side_of_tetrahedron(const Point& p, const Point& p0, const Point& p1, const Point& p2,
+                                   const Point& p3, Locate_type& lt, int& i, int& j) const
+  {
+    const auto orientation = traits_.orientation_3_object();
+    CGAL_precondition(orientation(p0, p1, p2, p3) == POSITIVE);
+    const Orientation o[4] = {orientation(p, p1, p2, p3), orientation(p0, p, p2, p3), orientation(p0, p1, p, p3),
+                              orientation(p0, p1, p2, p)};
+    int on = 0;
+    for(Orientation x : o) {
+      if(x == NEGATIVE) {
+        lt = OUTSIDE_CONVEX_HULL;
+        return ON_UNBOUNDED_SIDE;
+      }
+      on += x == ZERO ? 1 : 0;
+    }
+    auto first = [&o](Orientation x) { return o[0] == x ? 0 : o[1] == x ? 1 : o[2] == x ? 2 : 3; };
+    switch(on) {
+    case 0: lt = CELL; return ON_BOUNDED_SIDE;
+    case 1: lt = FACET; i = first(ZERO); return ON_BOUNDARY;
+    case 2: // on the edge of the two vertices whose facets do not hold p
+      lt = EDGE;
+      i = first(POSITIVE);
+      j = o[3] == POSITIVE ? 3 : o[2] == POSITIVE ? 2 : 1;
+      return ON_BOUNDARY;
+    default: lt = VERTEX; i = first(POSITIVE); return ON_BOUNDARY;
+    }
   }
 
   // ---------------------------------------------------------------- adjacency (dimension 3)
@@ -954,6 +1260,57 @@ private:
 #endif
   }
 
+  // Dimension 3: the kernel's insertion from `start`; below, insert(p).
+  Vertex_handle insert_from(const Point& p, Cell_handle start, std::vector<Tet_id>& ball)
+  {
+    ball.clear();
+    if(dimension() < 3) return insert(p);
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    const Vertex_id v = core_.insert_one_from(xyz, start ? start->id() : Tet_id(-1), ball);
+    after_single_insertion(ball);
+    return Vertex_handle(this, v);
+  }
+  // Every vertex of a deleted cell is a vertex of the ball (a Delaunay
+  // insertion removes no vertex), so pointing the vertices of the ball at it
+  // repairs the v->cell() cache at the cost of the ball, and the
+  // `v = insert(p, v)` idiom never rebuilds it.
+  void after_single_insertion(const std::vector<Tet_id>& ball)
+  {
+    vertex_infos_.resize(number_of_vertices());
+    if(incident_cells_.empty()) return;
+    incident_cells_.resize(number_of_vertices());
+    for(Tet_id t : ball)
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_id w = core_.mesh.vertex(t, i);
+        if(w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[w] = t;
+      }
+  }
+  Cell_handle hint_cell(Vertex_handle hint) const
+  {
+    return hint == Vertex_handle() || dimension() < 3 ? Cell_handle() : hint->cell();
+  }
+  template <class OutputItCells>
+  void give_new_cells(Vertex_handle v, const std::vector<Tet_id>& ball, OutputItCells& fit) const
+  {
+    if(dimension() < 3) return;
+    if(ball.empty()) {
+      fit = incident_cells(v, fit);
+      return;
+    }
+    for(Tet_id t : ball) *fit++ = Cell_handle(this, t);
+  }
+  Facet facet_of_code(std::uint64_t code) const
+  {
+    return Facet(Cell_handle(this, static_cast<Tet_id>(code >> 2)), static_cast<int>(code & 3));
+  }
+  // The infinite vertex first, then by id (the order of handles in CGAL's
+  // containers: the infinite vertex is created first).
+  static std::uint64_t handle_order(Vertex_handle v)
+  {
+    return v->id() == Fast_Delaunay_triangulation_3_internal::ghost_vertex ? 0 : std::uint64_t(v->id()) + 1;
+  }
+
   void cells_around(Vertex_handle v, std::vector<Tet_id>& cells) const
   {
     CGAL_precondition(dimension() == 3);
@@ -1116,6 +1473,49 @@ std::istream& operator>>(std::istream& is, Fast_Delaunay_triangulation_3<Gt, Tds
 {
   tr.read(is);
   return is;
+}
+
+// Equality as CGAL's operator== on Triangulation_3 defines it: the two
+// triangulations are isomorphic by the map that sends each vertex to the
+// vertex with the same point (same dimension, same vertices, same cells as
+// point sets).  Dimension 3 compares the finite cells (the infinite ones
+// follow from the hull).  Below it the vertices decide, because a Delaunay triangulation with CGAL's symbolic
+// perturbation is the only one of its points in every dimension.
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator==(const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a,
+                const Fast_Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b)
+{
+  return Fast_Delaunay_triangulation_3_internal::same_triangulation(a, b);
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator!=(const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a,
+                const Fast_Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b)
+{
+  return !(a == b);
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator==(const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a,
+                const Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b)
+{
+  return Fast_Delaunay_triangulation_3_internal::same_triangulation(a, b);
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator==(const Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b,
+                const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a)
+{
+  return a == b;
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator!=(const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a,
+                const Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b)
+{
+  return !(a == b);
+}
+template <class Gt1, class Tds1, class Lp1, class Lds1, class Gt2, class Tds2, class Lp2, class Lds2>
+bool operator!=(const Delaunay_triangulation_3<Gt2, Tds2, Lp2, Lds2>& b,
+                const Fast_Delaunay_triangulation_3<Gt1, Tds1, Lp1, Lds1>& a)
+{
+  return !(a == b);
 }
 
 } // namespace CGAL

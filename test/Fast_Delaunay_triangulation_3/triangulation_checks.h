@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -51,6 +52,25 @@ typedef std::array<Point_key, 3> Facet_key;
 typedef std::array<Point_key, 2> Edge_key;
 
 inline Point_key point_key(const Point& p) { return Point_key(p.x(), p.y(), p.z()); }
+
+// Any vertex, the infinite one included (as a point at infinity), and any
+// cell as the sorted keys of its vertices.
+const Point_key infinite_point_key(std::numeric_limits<double>::infinity(), 0, 0);
+
+template <class Tr>
+Point_key vertex_point_key(const Tr& tr, typename Tr::Vertex_handle v)
+{
+  return tr.is_infinite(v) ? infinite_point_key : point_key(v->point());
+}
+
+template <class Tr>
+std::array<Point_key, 4> cell_point_keys(const Tr& tr, typename Tr::Cell_handle c)
+{
+  std::array<Point_key, 4> k;
+  for(int i = 0; i < 4; ++i) k[i] = vertex_point_key(tr, c->vertex(i));
+  std::sort(k.begin(), k.end());
+  return k;
+}
 
 // The distinct points of an input, sorted: what the finite vertices must be.
 inline std::vector<Point_key> distinct_point_keys(const std::vector<Point>& points)

@@ -36,22 +36,21 @@ arguments of `Delaunay_triangulation_3`, and is ignored: the combinatorics
 always live in the package's flat arrays. Default: `Default`.
 
 \tparam Location_policy is accepted and ignored (insertion always walks from
-the last inserted point). Default: `Default`.
+the last inserted point or the hint): `Fast_location` or `Compact_location`,
+given third or, as in `Delaunay_triangulation_3<K, Fast_location>`, second;
+the typedef `Location_policy` names it. Default: `Default`.
 
 \tparam Lock_data_structure_ is accepted and ignored: insertion is sequential.
 Default: `Default`.
 
 <b>Differences from `Delaunay_triangulation_3`</b>
 
-- Only insertion is provided: there is no `remove()`, `move()`, `locate()`,
-  `nearest_vertex()`, `find_conflicts()`, `side_of_sphere()`, `dual()`,
-  circulators (`incident_cells()`, `incident_edges()`,
-  `Cell_circulator`, ...), `is_edge()` / `is_facet()` / `is_cell()`, and no
-  insertion of points with an info. The enum `Locate_type` is declared, but no
-  member function uses it yet.
-- The class does not derive from `Triangulation_utils_3`, so its static index
-  helpers (`ccw()`, `cw()`, `vertex_triple_index()`, `next_around_edge()`)
-  are not members.
+- Vertices cannot be removed or moved: there is no `remove()` or `move()`.
+  The segment traverser and the `Simplex` type are not provided either.
+- Point location, the conflict zone, the incident / adjacent queries and
+  the circulators, the Voronoi duals and `is_Gabriel()` are provided in
+  dimension 3 (the manual lists them); stream operators read and write
+  CGAL's file format.
 - Below dimension 3 the cells, counts and iterators are those of
   `Delaunay_triangulation_3` (Section
   \ref Fast_Delaunay_triangulation_3DegenerateDimensions of the manual), but

@@ -272,6 +272,53 @@ public:
                                    m_.point(tv[3]), p, filter_);
   }
 
+  // CAVITY alone, as a query (CGAL's find_conflicts): the tetrahedra in
+  // conflict with p grown from `start` (in conflict with p), with the same
+  // perturbed test as an insertion.  `visit` runs while they carry the cavity
+  // mark (is_live() false for them only), with the scratch's cavity and
+  // boundary lists filled; then every mark and boundary number is removed,
+  // so the mesh is bit for bit as before.
+  template <class Visit>
+  void conflict_zone(Tet_id start, const double* p, Visit&& visit)
+  {
+    CGAL_precondition(in_conflict(start, p));
+    const bool complete = cavity(start, p);
+    CGAL_assertion(complete); // only a partitioned kernel stops early
+    (void)complete;
+    visit();
+    undo_cavity();
+  }
+
+  // DELAUNAYBALL on a hole the caller chose (CGAL's insert_in_hole): the
+  // distinct live tetrahedra cells[0..n), star-shaped from vertex v's point,
+  // are replaced by v joined to their boundary facets.  No test on p: the
+  // hole need not be the conflict zone.
+  void fill_hole(Vertex_id v, const Tet_id* cells, std::size_t n)
+  {
+    s_.cavity.resize(n);
+    std::copy(cells, cells + n, s_.cavity.begin());
+    s_.boundary.clear();
+    s_.boundary_vertices.clear();
+    cavity_ghosts_ = 0;
+    for(Tet_id t : s_.cavity) {
+      CGAL_precondition(m_.is_live(t));
+      m_.mark_free(t);
+      cavity_ghosts_ += m_.is_ghost(t) ? 1 : 0;
+    }
+    for(Tet_id t : s_.cavity)
+      for(int f = 0; f < 4; ++f) {
+        const Facet_code code = m_.neighbor_code(t, f);
+        if(!m_.is_live(tet_of(code))) continue;
+        const std::size_t k = s_.boundary.size();
+        s_.boundary.resize(k + 1);
+        write_boundary_facet(s_.boundary[k], t, f, code);
+      }
+    const bool filled = delaunay_ball(v);
+    CGAL_assertion(filled); // the mesh's own slots never run out
+    (void)filled;
+    ++s_.stats.inserted;
+  }
+
 private:
   typedef std::chrono::steady_clock Clock;
   static double seconds(Clock::time_point a, Clock::time_point b)

@@ -183,6 +183,48 @@ public:
     return affine_independent_vertices(static_cast<Vertex_id>(number_of_vertices()), simplex);
   }
 
+  // Dimension 3: one point by the sequential kernel, its walk starting at
+  // `start` (the last insertion's tetrahedron when `start` is not live), as
+  // CGAL's insert(p, hint).  Returns the new vertex, or the older vertex that
+  // p duplicates; `ball` receives the new tetrahedra (none for a duplicate).
+  Vertex_id insert_one_from(const double* p, Tet_id start, std::vector<Tet_id>& ball)
+  {
+    CGAL_precondition(dimension == 3);
+    const Vertex_id v = append_vertex(p);
+    Insertion_scratch scratch;
+    Delaunay_kernel<> kernel = sequential_kernel(scratch);
+    Tet_id hint = start < mesh.number_of_slots() && mesh.is_live(start) ? start : hint_;
+    if(!mesh.is_live(hint)) hint = mesh.first_live_tet();
+    Vertex_id existing = ghost_vertex;
+    const bool duplicate = kernel.insert(v, hint, existing) == Insertion_result::duplicate;
+    hint_ = hint;
+    ball.clear();
+    if(duplicate) {
+      mesh.vertices.resize(v); // the box keeps p: it is an existing vertex
+      finish_single_insertion(scratch);
+      return existing;
+    }
+    ball = scratch.ball;
+    finish_single_insertion(scratch);
+    return v;
+  }
+
+  // Dimension 3, CGAL's insert_in_hole: the distinct tetrahedra hole[0..n),
+  // star-shaped from p (p is no vertex), are replaced by the new vertex of p
+  // joined to their boundary facets, listed in `ball`.
+  Vertex_id insert_in_hole(const double* p, const Tet_id* hole, std::size_t n, std::vector<Tet_id>& ball)
+  {
+    CGAL_precondition(dimension == 3 && n > 0);
+    const Vertex_id v = append_vertex(p);
+    Insertion_scratch scratch;
+    Delaunay_kernel<> kernel = sequential_kernel(scratch);
+    kernel.fill_hole(v, hole, n);
+    ball = scratch.ball;
+    hint_ = ball.front();
+    finish_single_insertion(scratch);
+    return v;
+  }
+
   // Exact validity: combinatorics, orientation and the (perturbed) local
   // Delaunay property on every facet.  Writes the first problem to `why`.
   bool is_valid(std::string* why = nullptr) const;
@@ -192,6 +234,34 @@ private:
   static double seconds(Clock::time_point a, Clock::time_point b)
   {
     return std::chrono::duration<double>(b - a).count();
+  }
+
+  // The record of one new vertex at p, inside the bounding box of the filters.
+  Vertex_id append_vertex(const double* p)
+  {
+    if(number_of_vertices() + 1 > max_vertices)
+      throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^32 - 2 vertices");
+    const Vertex_id v = static_cast<Vertex_id>(number_of_vertices());
+    Vertex_record r;
+    r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
+    r.scratch = 0;
+    mesh.vertices.push_back(r);
+    extend_bounding_box(v);
+    return v;
+  }
+  Delaunay_kernel<> sequential_kernel(Insertion_scratch& scratch)
+  {
+    scratch.timed = false;
+    return Delaunay_kernel<>(mesh, scratch, Mesh_slots{&mesh}, Static_filter::for_box(box_lo_, box_hi_),
+                             Sub_determinant_filter::for_box(box_lo_, box_hi_));
+  }
+  void finish_single_insertion(const Insertion_scratch& scratch)
+  {
+    mesh.live_tets += scratch.live_delta;
+    mesh.ghost_tets += scratch.ghost_delta;
+    last_report = Insertion_report();
+    last_report.points = 1;
+    last_report.kernel = scratch.stats;
   }
 
   // 6.75 tetrahedra per vertex in the Poisson limit, ghosts included.

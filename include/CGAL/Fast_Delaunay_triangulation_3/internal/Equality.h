@@ -1,0 +1,78 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Equality of two triangulations given by points (operator== between two
+// Fast_Delaunay_triangulation_3, or with a CGAL::Delaunay_triangulation_3):
+// the meaning of CGAL's operator== on Triangulation_3, an isomorphism that
+// maps each vertex to the vertex with the same point.  Vertex and cell
+// numbering differ between the two, so both sides are reduced to sorted
+// lists of point tuples through the public interface only.
+
+#ifndef CGAL_FDT3_INTERNAL_EQUALITY_H
+#define CGAL_FDT3_INTERNAL_EQUALITY_H
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace CGAL {
+
+// Declared without its default arguments (CGAL's header gives them), so that
+// operator== can name it without pulling in CGAL's triangulation.
+template <class Gt, class Tds_, class Location_policy, class Lock_data_structure_>
+class Delaunay_triangulation_3;
+
+namespace Fast_Delaunay_triangulation_3_internal {
+
+typedef std::array<double, 3> Point_tuple;
+
+template <class Point>
+Point_tuple point_tuple(const Point& p)
+{
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+
+template <class Tr>
+std::vector<Point_tuple> sorted_vertex_tuples(const Tr& tr)
+{
+  std::vector<Point_tuple> keys;
+  keys.reserve(tr.number_of_vertices());
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) keys.push_back(point_tuple(v->point()));
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+template <class Tr>
+std::vector<std::array<Point_tuple, 4>> sorted_cell_tuples(const Tr& tr)
+{
+  std::vector<std::array<Point_tuple, 4>> keys;
+  keys.reserve(tr.number_of_finite_cells());
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+    std::array<Point_tuple, 4> k;
+    for(int i = 0; i < 4; ++i) k[i] = point_tuple(c->vertex(i)->point());
+    std::sort(k.begin(), k.end());
+    keys.push_back(k);
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+// Same dimension and vertices; in dimension 3 the same finite cells (the
+// infinite ones are determined by the hull of the finite ones).  Below
+// dimension 3 the vertices decide: see the comment of operator==.
+template <class A, class B>
+bool same_triangulation(const A& a, const B& b)
+{
+  if(a.dimension() != b.dimension() || a.number_of_vertices() != b.number_of_vertices()) return false;
+  if(sorted_vertex_tuples(a) != sorted_vertex_tuples(b)) return false;
+  if(a.dimension() < 3) return true;
+  if(a.number_of_finite_cells() != b.number_of_finite_cells()) return false;
+  return sorted_cell_tuples(a) == sorted_cell_tuples(b);
+}
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_EQUALITY_H
