@@ -241,15 +241,19 @@ struct Flat_storage
     ghost_tets = 0;
   }
 
-  // `slots` tetrahedron slots in all; new slots are free (marked) until written.
-  void resize_tets(std::size_t slots)
+  // `slots` tetrahedron slots in all; new slots are free (marked) until
+  // written, unless the caller marks the ones it leaves unused itself
+  // (unmarked slots are never touched, so their pages cost no memory).
+  enum class New_slots { marked_free, left_unwritten };
+  void resize_tets(std::size_t slots, New_slots new_slots = New_slots::marked_free)
   {
     if(slots > max_tets)
       throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^30 tetrahedra; "
                               "define CGAL_FDT3_64_BIT_FACET_CODES for larger triangulations");
     const std::size_t old = tets.size();
     tets.resize(slots);
-    for(std::size_t t = old; t < slots; ++t) tets[t].v[0] = mark_bit;
+    if(new_slots == New_slots::marked_free)
+      for(std::size_t t = old; t < slots; ++t) tets[t].v[0] = mark_bit;
     if(with_sub_determinants) tet_sub_determinants.resize(4 * slots);
   }
 

@@ -79,6 +79,12 @@ class Partitioned_insertion
 public:
   static constexpr std::size_t min_points_per_partition = 3000;
   static constexpr std::size_t retry_mesh_ratio = 32;
+  // Fresh tetrahedron slots reserved per point of a partition: a Delaunay
+  // tetrahedralization has about 6.7 tetrahedra per vertex, so 7 leaves a
+  // little slack; a partition that runs out aborts its remaining points like
+  // any other conflict.  The slots a partition leaves unused are marked free,
+  // which touches their pages: a larger margin costs resident memory.
+  static constexpr std::size_t fresh_slots_per_point = 7;
 
   Partitioned_insertion(Flat_storage& mesh, const Static_filter& filter,
                         const Sub_determinant_filter& sub_filter, const double box_lo[3],
@@ -178,6 +184,7 @@ private:
         items[i] = {key_of(points[i]), points[i]};
     });
     radix_sort(items, scratch_items, 3 * bits, partitions);
+    std::vector<Key_value<std::uint32_t>>().swap(scratch_items); // not needed while the mesh grows
 
     // Partition j holds keys in [first_key[j], first_key[j + 1]).
     std::vector<std::size_t> cut(partitions + 1);
@@ -210,7 +217,7 @@ private:
     std::vector<Tet_id> fresh_begin(partitions + 1);
     fresh_begin[0] = m_.number_of_slots();
     for(int j = 0; j < partitions; ++j)
-      fresh_begin[j + 1] = fresh_begin[j] + 8 * (cut[j + 1] - cut[j]) + 1024;
+      fresh_begin[j + 1] = fresh_begin[j] + fresh_slots_per_point * (cut[j + 1] - cut[j]) + 4096;
     resize_cell_arrays(fresh_begin[partitions]);
 
     std::vector<Tet_id> hints = owned_start_tets(partitions);
@@ -248,9 +255,11 @@ private:
       m_.live_tets += scratches[j].live_delta;
       m_.ghost_tets += scratches[j].ghost_delta;
       stats.add(scratches[j].stats);
-      for(Tet_id t = next_fresh[j]; t < fresh_begin[j + 1]; ++t) {
-        m_.mark_free(t);
-        if(j + 1 < partitions) m_.free_tets.push_back(t);
+      if(j + 1 < partitions) {
+        for(Tet_id t = next_fresh[j]; t < fresh_begin[j + 1]; ++t) {
+          m_.tets[t].v[0] = mark_bit; // never written: free
+          m_.free_tets.push_back(t);
+        }
       }
       m_.free_tets.insert(m_.free_tets.end(), free_lists[j].begin(), free_lists[j].end());
       failed.insert(failed.end(), failures[j].begin(), failures[j].end());
@@ -261,7 +270,9 @@ private:
 
   void resize_cell_arrays(std::size_t slots)
   {
-    m_.resize_tets(slots);
+    // Each partition writes the fresh slots it uses; the unused ones are
+    // marked free or cut off after the tasks.
+    m_.resize_tets(slots, Flat_storage::New_slots::left_unwritten);
   }
 
   // A live tetrahedron owned by each partition (no_tet if none), found by one
