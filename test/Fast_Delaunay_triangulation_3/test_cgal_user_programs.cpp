@@ -1,0 +1,418 @@
+// The programs of CGAL's Triangulation_3 user manual, written as templates on
+// the triangulation class and run once with CGAL::Delaunay_triangulation_3 and
+// once with CGAL::Fast_Delaunay_triangulation_3 (issue 4: a user's program
+// compiles unchanged but for the class name and prints the same output).
+// Each program prints into a string; where CGAL's order is arbitrary (handle
+// order, order of incident vertices or of the conflict zone) the program sorts
+// what it prints by the points, so the two strings must be equal.
+#include "triangulation_checks.h"
+
+#include <CGAL/Fast_Delaunay_triangulation_3.h>
+#include <CGAL/IO/Color.h>
+#include <CGAL/point_generators_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/iterator/transform_iterator.hpp>
+#include <boost/iterator/zip_iterator.hpp>
+
+#include <algorithm>
+#include <iterator>
+#include <list>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace fdt3_test;
+
+namespace {
+
+// ---------------------------------------------------------------- printing helpers
+template <class Tr>
+std::string vertex_text(const Tr& t, typename Tr::Vertex_handle v)
+{
+  if(t.is_infinite(v)) return "inf";
+  std::ostringstream os;
+  os << '(' << v->point() << ')';
+  return os.str();
+}
+
+template <class Tr>
+std::string cell_text(const Tr& t, typename Tr::Cell_handle c)
+{
+  std::vector<std::string> vs;
+  for(int i = 0; i < 4; ++i) vs.push_back(vertex_text(t, c->vertex(i)));
+  std::sort(vs.begin(), vs.end());
+  std::string s = "[";
+  for(const std::string& v : vs) s += v + ' ';
+  return s + ']';
+}
+
+template <class Tr>
+std::string facet_text(const Tr& t, const typename Tr::Facet& f)
+{
+  std::vector<std::string> vs;
+  for(int k = 1; k < 4; ++k) vs.push_back(vertex_text(t, f.first->vertex((f.second + k) & 3)));
+  std::sort(vs.begin(), vs.end());
+  std::string s = "<";
+  for(const std::string& v : vs) s += v + ' ';
+  return s + '>';
+}
+
+template <class Strings>
+std::string sorted_lines(Strings lines)
+{
+  std::sort(lines.begin(), lines.end());
+  std::string s;
+  for(const std::string& l : lines) s += l + '\n';
+  return s;
+}
+
+std::vector<Point> random_points(std::size_t n, int seed)
+{
+  CGAL::Random random(seed);
+  CGAL::Random_points_in_cube_3<Point> generator(1.0, random);
+  std::vector<Point> points;
+  std::copy_n(generator, n, std::back_inserter(points));
+  return points;
+}
+
+// ---------------------------------------------------------------- simple_triangulation_3
+// Construction from a list, insertion of a range, locate, adjacency through
+// the cells, incident vertices, write and read back.
+template <class Triangulation>
+std::string simple_triangulation()
+{
+  typedef typename Triangulation::Cell_handle Cell_handle;
+  typedef typename Triangulation::Vertex_handle Vertex_handle;
+  typedef typename Triangulation::Locate_type Locate_type;
+  std::ostringstream out;
+
+  std::list<Point> L;
+  L.push_front(Point(0, 0, 0));
+  L.push_front(Point(1, 0, 0));
+  L.push_front(Point(0, 1, 0));
+  Triangulation T(L.begin(), L.end());
+  typename Triangulation::size_type n = T.number_of_vertices();
+  out << "dimension " << T.dimension() << " vertices " << n << '\n';
+
+  std::vector<Point> V(3);
+  V[0] = Point(0, 0, 1);
+  V[1] = Point(1, 1, 1);
+  V[2] = Point(2, 2, 2);
+  n = n + T.insert(V.begin(), V.end());
+  out << "vertices " << n << " valid " << T.is_valid() << " dimension " << T.dimension() << '\n';
+
+  Locate_type lt;
+  int li = 0, lj = 0;
+  Point p(0, 0, 0);
+  Cell_handle c = T.locate(p, lt, li, lj);
+  out << "locate type " << int(lt) << " at vertex " << (c->vertex(li)->point() == p) << '\n';
+
+  Vertex_handle v = c->vertex((li + 1) & 3);
+  Cell_handle nc = c->neighbor(li);
+  int nli = 0;
+  out << "neighbour has vertex " << nc->has_vertex(v, nli) << " at " << (nc->vertex(nli) == v) << '\n';
+
+  Vertex_handle w;
+  out << "is_vertex (1 1 1) " << T.is_vertex(Point(1, 1, 1), w) << " (0.5 0.5 0.5) "
+      << T.is_vertex(Point(0.5, 0.5, 0.5), w) << '\n';
+  T.is_vertex(Point(1, 1, 1), w);
+  std::vector<Vertex_handle> around;
+  T.incident_vertices(w, std::back_inserter(around));
+  std::vector<std::string> names;
+  for(Vertex_handle u : around) names.push_back(vertex_text(T, u));
+  out << "around (1 1 1):\n" << sorted_lines(names);
+
+  std::stringstream file;
+  file << T;
+  Triangulation T1;
+  file >> T1;
+  out << "read back valid " << T1.is_valid() << " vertices " << T1.number_of_vertices() << " cells "
+      << T1.number_of_cells() << " same cells count " << (T1.number_of_cells() == T.number_of_cells()) << '\n';
+  return out.str();
+}
+
+// ---------------------------------------------------------------- fast_location_3 / hints
+// The `v = T.insert(p, v)` idiom on a grid (degenerate: the symbolic
+// perturbation decides), then locate and insert with a cell hint.
+template <class Triangulation>
+std::string insertion_with_hints()
+{
+  typedef typename Triangulation::Vertex_handle Vertex_handle;
+  typedef typename Triangulation::Cell_handle Cell_handle;
+  std::ostringstream out;
+  Triangulation T;
+  Vertex_handle v;
+  for(int z = 0; z < 5; ++z)
+    for(int y = 0; y < 5; ++y)
+      for(int x = 0; x < 5; ++x) v = T.insert(Point(x, y, z), v);
+  out << "grid: vertices " << T.number_of_vertices() << " cells " << T.number_of_cells() << " finite "
+      << T.number_of_finite_cells() << " valid " << T.is_valid() << '\n';
+
+  for(const Point& p : random_points(200, 3)) {
+    Cell_handle c = T.locate(p);
+    T.insert(p, c);
+  }
+  out << "after hinted: vertices " << T.number_of_vertices() << " finite cells " << T.number_of_finite_cells()
+      << " edges " << T.number_of_finite_edges() << " facets " << T.number_of_finite_facets() << '\n';
+
+  // Not equidistant from two grid points: on a tie CGAL's answer depends
+  // on its traversal order.
+  const Point q(2.2, 2.4, 1.7);
+  Vertex_handle nearest = T.nearest_vertex(q);
+  out << "nearest to " << q << ": " << nearest->point() << '\n';
+  std::vector<std::string> cells;
+  for(Cell_handle c : T.finite_cell_handles())
+    if(c->has_vertex(nearest)) cells.push_back(cell_text(T, c));
+  out << "finite cells of nearest:\n" << sorted_lines(cells);
+  return out.str();
+}
+
+// ---------------------------------------------------------------- info_insert_with_pair_iterator_3 and friends
+typedef CGAL::Triangulation_vertex_base_with_info_3<unsigned, K> Vb_unsigned;
+typedef CGAL::Triangulation_data_structure_3<Vb_unsigned, CGAL::Delaunay_triangulation_cell_base_3<K>> Tds_unsigned;
+
+template <class Triangulation>
+std::string check_infos(const Triangulation& T, const std::vector<Point>& points)
+{
+  std::ostringstream out;
+  bool all = true;
+  for(typename Triangulation::Finite_vertices_iterator vit = T.finite_vertices_begin();
+      vit != T.finite_vertices_end(); ++vit)
+    if(points[vit->info()] != vit->point()) all = false;
+  out << "vertices " << T.number_of_vertices() << " infos match " << all << '\n';
+  return out.str();
+}
+
+template <class Triangulation>
+std::string info_with_pairs()
+{
+  std::vector<std::pair<Point, unsigned>> pairs;
+  std::vector<Point> points = random_points(100, 5);
+  for(unsigned i = 0; i < points.size(); ++i) pairs.push_back(std::make_pair(points[i], i));
+  Triangulation T(pairs.begin(), pairs.end());
+  return check_infos(T, points);
+}
+
+template <class Triangulation>
+std::string info_with_zip_iterator()
+{
+  std::vector<Point> points = random_points(100, 6);
+  std::vector<unsigned> indices;
+  for(unsigned i = 0; i < points.size(); ++i) indices.push_back(i);
+  Triangulation T(boost::make_zip_iterator(boost::make_tuple(points.begin(), indices.begin())),
+                  boost::make_zip_iterator(boost::make_tuple(points.end(), indices.end())));
+  return check_infos(T, points);
+}
+
+struct Auto_count
+{
+  const std::vector<Point>* points;
+  typedef std::pair<Point, unsigned> result_type;
+  std::pair<Point, unsigned> operator()(unsigned i) const { return std::make_pair((*points)[i], i); }
+};
+
+template <class Triangulation>
+std::string info_with_transform_iterator()
+{
+  std::vector<Point> points = random_points(100, 7);
+  Auto_count count{&points};
+  Triangulation T(boost::make_transform_iterator(boost::counting_iterator<unsigned>(0), count),
+                  boost::make_transform_iterator(boost::counting_iterator<unsigned>(unsigned(points.size())), count));
+  return check_infos(T, points);
+}
+
+// ---------------------------------------------------------------- color_3: an info written through handles
+typedef CGAL::Triangulation_vertex_base_with_info_3<CGAL::IO::Color, K> Vb_color;
+typedef CGAL::Triangulation_data_structure_3<Vb_color, CGAL::Delaunay_triangulation_cell_base_3<K>> Tds_color;
+
+template <class Triangulation>
+std::string color_by_degree()
+{
+  Triangulation T;
+  for(int z = 0; z < 3; ++z)
+    for(int y = 0; y < 3; ++y)
+      for(int x = 0; x < 3; ++x) T.insert(Point(x, y, z));
+  for(typename Triangulation::Vertex_handle v : T.finite_vertex_handles())
+    v->info() = T.degree(v) == 6 ? CGAL::IO::red() : CGAL::IO::blue();
+  std::vector<std::string> lines;
+  for(typename Triangulation::Vertex_handle v : T.finite_vertex_handles()) {
+    std::ostringstream os;
+    os << v->point() << " degree " << T.degree(v) << " red " << (v->info() == CGAL::IO::red());
+    lines.push_back(os.str());
+  }
+  return sorted_lines(lines);
+}
+
+// ---------------------------------------------------------------- adding_handles_3: a user vertex base
+// The manual's pattern: a vertex base with extra members, rebound to the data
+// structure's handles through Rebind_TDS.
+template <class GT, class Vb = CGAL::Triangulation_vertex_base_3<GT>>
+class My_vertex_base : public Vb
+{
+public:
+  typedef typename Vb::Vertex_handle Vertex_handle;
+  typedef typename Vb::Cell_handle Cell_handle;
+  typedef typename Vb::Point Point;
+
+  template <class TDS2>
+  struct Rebind_TDS
+  {
+    typedef typename Vb::template Rebind_TDS<TDS2>::Other Vb2;
+    typedef My_vertex_base<GT, Vb2> Other;
+  };
+
+  My_vertex_base() {}
+  My_vertex_base(const Point& p) : Vb(p) {}
+  My_vertex_base(const Point& p, Cell_handle c) : Vb(p, c) {}
+
+  Vertex_handle vh;
+  Cell_handle ch;
+  int color = 0;
+  std::vector<Vertex_handle> marked;
+};
+
+typedef CGAL::Triangulation_data_structure_3<My_vertex_base<K>, CGAL::Delaunay_triangulation_cell_base_3<K>>
+    Tds_handles;
+
+template <class Triangulation>
+std::string adding_handles()
+{
+  typedef typename Triangulation::Vertex_handle Vertex_handle;
+  std::ostringstream out;
+  Triangulation T;
+  Vertex_handle v0 = T.insert(Point(0, 0, 0));
+  Vertex_handle v1 = T.insert(Point(0, 0, 1));
+  Vertex_handle v2 = T.insert(Point(0, 1, 0));
+  Vertex_handle v3 = T.insert(Point(1, 0, 0));
+  Vertex_handle v4 = T.insert(Point(2, 2, 2));
+  Vertex_handle v5 = T.insert(Point(-1, 0, 1));
+
+  // A cycle of vertices, walked from v0.
+  v0->vh = v1;
+  v1->vh = v2;
+  v2->vh = v3;
+  v3->vh = v4;
+  v4->vh = v5;
+  v5->vh = v0;
+  Vertex_handle v = v0;
+  for(int k = 0; k < 7; ++k, v = v->vh) out << v->point() << " -> ";
+  out << '\n';
+
+  // Each vertex remembers one of its cells and its neighbours of larger x.
+  for(typename Triangulation::Finite_vertices_iterator vit = T.finite_vertices_begin();
+      vit != T.finite_vertices_end(); ++vit) {
+    vit->ch = vit->cell();
+    vit->color = int(T.degree(vit));
+  }
+  for(Vertex_handle u : T.finite_vertex_handles()) {
+    std::vector<Vertex_handle> around;
+    T.finite_adjacent_vertices(u, std::back_inserter(around));
+    for(Vertex_handle w : around)
+      if(w->point().x() > u->point().x()) u->marked.push_back(w);
+  }
+  std::vector<std::string> lines;
+  for(Vertex_handle u : T.finite_vertex_handles()) {
+    std::ostringstream os;
+    os << u->point() << " color " << u->color << " cell has it " << u->ch->has_vertex(u) << " marked";
+    std::vector<std::string> names;
+    for(Vertex_handle w : u->marked) names.push_back(vertex_text(T, w));
+    std::sort(names.begin(), names.end());
+    for(const std::string& name : names) os << ' ' << name;
+    lines.push_back(os.str());
+  }
+  out << sorted_lines(lines);
+
+  // The members survive later insertions, and a copy of the triangulation
+  // has its own.
+  T.insert(Point(0.25, 0.25, 0.25));
+  Triangulation copy(T);
+  Vertex_handle c0;
+  copy.is_vertex(Point(0, 0, 0), c0);
+  c0->color = -1;
+  out << "after insertion: v0 color " << v0->color << " next " << v0->vh->point() << " copy color " << c0->color
+      << " copy next " << c0->vh->point() << '\n';
+  out << "valid " << T.is_valid() << ' ' << copy.is_valid() << '\n';
+  return out.str();
+}
+
+// ---------------------------------------------------------------- find_conflicts
+template <class Triangulation>
+std::string conflicts()
+{
+  typedef typename Triangulation::Cell_handle Cell_handle;
+  typedef typename Triangulation::Facet Facet;
+  std::ostringstream out;
+  std::vector<Point> points = random_points(300, 9);
+  Triangulation T(points.begin(), points.end());
+  const Point p(0.1, -0.2, 0.3);
+  Cell_handle c = T.locate(p);
+  std::vector<Facet> boundary;
+  std::vector<Cell_handle> cells;
+  std::vector<Facet> internal;
+  T.find_conflicts(p, c, std::back_inserter(boundary), std::back_inserter(cells), std::back_inserter(internal));
+  std::vector<std::string> lines;
+  for(Cell_handle k : cells) lines.push_back("cell " + cell_text(T, k));
+  for(const Facet& f : boundary) lines.push_back("boundary " + facet_text(T, f));
+  for(const Facet& f : internal) lines.push_back("internal " + facet_text(T, f));
+  out << sorted_lines(lines);
+
+  std::vector<typename Triangulation::Vertex_handle> vertices;
+  T.vertices_on_conflict_zone_boundary(p, c, std::back_inserter(vertices));
+  std::vector<std::string> names;
+  for(auto v : vertices) names.push_back(vertex_text(T, v));
+  out << "boundary vertices\n" << sorted_lines(names);
+
+  // Inserting into the zone gives the cells a plain insertion would.
+  Triangulation U(T);
+  auto v = T.insert_in_hole(p, cells.begin(), cells.end(), boundary.front().first, boundary.front().second);
+  U.insert(p);
+  out << "degree " << T.degree(v) << " same as insert " << (T == U) << " valid " << T.is_valid() << '\n';
+  return out.str();
+}
+
+// ---------------------------------------------------------------- the tests
+template <class Cgal, class Fast, class Program>
+void expect_same_output(Program program_of)
+{
+  const std::string expected = program_of(static_cast<Cgal*>(nullptr));
+  const std::string actual = program_of(static_cast<Fast*>(nullptr));
+  EXPECT_FALSE(expected.empty());
+  EXPECT_EQ(expected, actual);
+}
+
+#define FDT3_SAME_OUTPUT(Cgal_type, Fast_type, program)                                                    \
+  expect_same_output<Cgal_type, Fast_type>([](auto* tag) {                                                  \
+    return program<std::remove_pointer_t<decltype(tag)>>();                                                 \
+  })
+
+typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
+
+TEST(CgalUserPrograms, SimpleTriangulation) { FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, simple_triangulation); }
+
+TEST(CgalUserPrograms, InsertionWithHints) { FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, insertion_with_hints); }
+
+TEST(CgalUserPrograms, InfoWithPairs)
+{
+  typedef CGAL::Delaunay_triangulation_3<K, Tds_unsigned> Cgal_info;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds_unsigned> Fast_info;
+  FDT3_SAME_OUTPUT(Cgal_info, Fast_info, info_with_pairs);
+  FDT3_SAME_OUTPUT(Cgal_info, Fast_info, info_with_zip_iterator);
+  FDT3_SAME_OUTPUT(Cgal_info, Fast_info, info_with_transform_iterator);
+}
+
+TEST(CgalUserPrograms, ColorInfo)
+{
+  typedef CGAL::Delaunay_triangulation_3<K, Tds_color> Cgal_color;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds_color> Fast_color;
+  FDT3_SAME_OUTPUT(Cgal_color, Fast_color, color_by_degree);
+}
+
+TEST(CgalUserPrograms, FindConflicts) { FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, conflicts); }
+
+} // namespace
