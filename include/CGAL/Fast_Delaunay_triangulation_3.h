@@ -20,6 +20,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_io.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/User_vertex_base.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_and_cell_infos.h>
 
 #include <CGAL/Default.h>
@@ -113,9 +114,23 @@ public:
   typedef std::size_t size_type;
   typedef std::ptrdiff_t difference_type;
 
-  typedef Fast_Delaunay_triangulation_3_internal::Vertex_facade<Self> Vertex;
+private:
+  // A user's vertex base with members of its own (see User_vertex_base.h):
+  // rebound to our handles, one per vertex in a side array; void for CGAL's
+  // own bases, whose vertices are plain facades over the flat arrays.
+  typedef typename Fast_Delaunay_triangulation_3_internal::Rebound_vertex_base<typename Arguments::Tds, Self>::type
+      User_vertex_base;
+  static constexpr bool has_user_vertex_base = !std::is_void<User_vertex_base>::value;
+
+public:
+  typedef typename std::conditional<has_user_vertex_base,
+                                    Fast_Delaunay_triangulation_3_internal::User_vertex<Self, User_vertex_base>,
+                                    Fast_Delaunay_triangulation_3_internal::Vertex_facade<Self>>::type Vertex;
   typedef Fast_Delaunay_triangulation_3_internal::Cell_facade<Self> Cell;
-  typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Vertex, Vertex_id> Vertex_handle;
+  typedef typename std::conditional<has_user_vertex_base,
+                                    Fast_Delaunay_triangulation_3_internal::User_vertex_handle<Self, Vertex>,
+                                    Fast_Delaunay_triangulation_3_internal::Flat_handle<Vertex, Vertex_id>>::type
+      Vertex_handle;
   typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Cell, Tet_id> Cell_handle;
   // Info of Triangulation_vertex_base_with_info_3 / Triangulation_cell_base_with_info_3
   // in the data structure argument (void without): v->info(), c->info().
@@ -145,12 +160,12 @@ private:
   };
 
 public:
-  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell, Cell_handle, Tet_id, Accept_live_cell>
+  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell_handle, Tet_id, Accept_live_cell>
       All_cells_iterator;
-  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell, Cell_handle, Tet_id, Accept_finite_cell>
+  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell_handle, Tet_id, Accept_finite_cell>
       Finite_cells_iterator;
   typedef All_cells_iterator Cell_iterator;
-  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Vertex, Vertex_handle, Vertex_id, Accept_any_vertex>
+  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Vertex_handle, Vertex_id, Accept_any_vertex>
       Finite_vertices_iterator;
 
   // All vertices: the infinite vertex first, then the finite ones (CGAL's order).
@@ -158,21 +173,21 @@ public:
   {
   public:
     typedef std::forward_iterator_tag iterator_category;
-    typedef Vertex value_type;
+    typedef decltype(*std::declval<const Vertex_handle&>()) reference;
+    typedef typename std::remove_reference<reference>::type value_type;
+    typedef value_type* pointer;
     typedef std::ptrdiff_t difference_type;
-    typedef const Vertex* pointer;
-    typedef const Vertex& reference;
 
     All_vertices_iterator() = default;
     All_vertices_iterator(const Self* tr, std::size_t position)
-        : position_(position), facade_(tr, id_at(position)) {}
-    const Vertex& operator*() const { return facade_; }
-    const Vertex* operator->() const { return &facade_; }
-    operator Vertex_handle() const { return Vertex_handle(facade_.triangulation(), facade_.id()); }
+        : position_(position), handle_(tr, id_at(position)) {}
+    reference operator*() const { return *handle_; }
+    pointer operator->() const { return handle_.operator->(); }
+    operator Vertex_handle() const { return handle_; }
     All_vertices_iterator& operator++()
     {
       ++position_;
-      facade_ = Vertex(facade_.triangulation(), id_at(position_));
+      handle_ = Vertex_handle(handle_.owner(), id_at(position_));
       return *this;
     }
     All_vertices_iterator operator++(int) { All_vertices_iterator old = *this; ++*this; return old; }
@@ -186,7 +201,7 @@ public:
                            : static_cast<Vertex_id>(position - 1);
     }
     std::size_t position_ = 0;
-    Vertex facade_;
+    Vertex_handle handle_;
   };
   typedef All_vertices_iterator Vertex_iterator;
 
@@ -313,6 +328,7 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Cell_circulator_around_edge<Self> Cell_circulator;
   typedef Fast_Delaunay_triangulation_3_internal::Facet_circulator_around_edge<Self> Facet_circulator;
 
+
   // ---------------------------------------------------------------- creation
   explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits(),
                                          Lock_data_structure* lock_ds = nullptr)
@@ -344,13 +360,17 @@ public:
 
   Fast_Delaunay_triangulation_3(const Self& other)
       : traits_(other.traits_), core_(other.core_), lock_ds_(other.lock_ds_), threads_(other.threads_),
-        vertex_infos_(other.vertex_infos_), cell_infos_(other.cell_infos_)
-  {}
+        vertex_infos_(other.vertex_infos_), cell_infos_(other.cell_infos_),
+        user_vertices_(other.user_vertices_)
+  {
+    user_vertices_.attach(this);
+  }
   Fast_Delaunay_triangulation_3(Self&& other) noexcept
       : traits_(std::move(other.traits_)), core_(std::move(other.core_)), lock_ds_(other.lock_ds_),
         threads_(other.threads_), vertex_infos_(std::move(other.vertex_infos_)),
-        cell_infos_(std::move(other.cell_infos_))
+        cell_infos_(std::move(other.cell_infos_)), user_vertices_(std::move(other.user_vertices_))
   {
+    user_vertices_.attach(this);
     other.clear();
   }
   Self& operator=(const Self& other)
@@ -362,6 +382,8 @@ public:
       threads_ = other.threads_;
       vertex_infos_ = other.vertex_infos_;
       cell_infos_ = other.cell_infos_;
+      user_vertices_ = other.user_vertices_;
+      user_vertices_.attach(this);
       incident_cells_.clear();
     }
     return *this;
@@ -375,6 +397,8 @@ public:
       threads_ = other.threads_;
       vertex_infos_ = std::move(other.vertex_infos_);
       cell_infos_ = std::move(other.cell_infos_);
+      user_vertices_ = std::move(other.user_vertices_);
+      user_vertices_.attach(this);
       incident_cells_.clear();
       other.clear();
     }
@@ -388,6 +412,9 @@ public:
     std::swap(threads_, other.threads_);
     std::swap(vertex_infos_, other.vertex_infos_);
     std::swap(cell_infos_, other.cell_infos_);
+    std::swap(user_vertices_, other.user_vertices_);
+    user_vertices_.attach(this);
+    other.user_vertices_.attach(&other);
     incident_cells_.clear();
     other.incident_cells_.clear();
   }
@@ -396,6 +423,7 @@ public:
     core_.clear();
     vertex_infos_.clear();
     cell_infos_.clear();
+    user_vertices_.clear();
     incident_cells_.clear();
   }
 
@@ -456,7 +484,7 @@ public:
     incident_cells_.clear();
     core_.partitions = 1; // one point: no partitioned round to run
     const Vertex_id v = core_.insert_one(xyz);
-    vertex_infos_.resize(number_of_vertices());
+    vertices_added();
     return Vertex_handle(this, v);
   }
   // CGAL's insert(p, hint): in dimension 3 the kernel's walk starts at the
@@ -534,7 +562,7 @@ public:
     std::vector<Tet_id> hole, ball;
     for(; cells_begin != cells_end; ++cells_begin) {
       const Cell_handle c = *cells_begin;
-      hole.push_back(c->id());
+      hole.push_back(c.index());
     }
     const Vertex_id v = core_.insert_in_hole(xyz, hole.data(), hole.size(), ball);
     after_single_insertion(ball);
@@ -559,7 +587,7 @@ public:
     const double q[3] = {p.x(), p.y(), p.z()};
     Fast_Delaunay_triangulation_3_internal::Conflict_zone zone;
     Fast_Delaunay_triangulation_3_internal::find_conflict_zone(
-        core_.mesh, c->id(), q, !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value, zone);
+        core_.mesh, c.index(), q, !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value, zone);
     for(auto code : zone.boundary) *bfit++ = facet_of_code(code);
     for(Tet_id t : zone.cells) *cit++ = Cell_handle(this, t);
     for(auto code : zone.internal) *ifit++ = facet_of_code(code);
@@ -658,18 +686,18 @@ public:
     return Cell_handle();
   }
 
-  bool is_infinite(Vertex_handle v) const { return v->id() == Fast_Delaunay_triangulation_3_internal::ghost_vertex; }
+  bool is_infinite(Vertex_handle v) const { return v.index() == Fast_Delaunay_triangulation_3_internal::ghost_vertex; }
   // Also below dimension 3 (where CGAL requires dimension 3): whether c has
   // the infinite vertex.
   bool is_infinite(Cell_handle c) const
   {
-    return dimension() == 3 ? core_.mesh.is_ghost(c->id()) : has_infinite_vertex(c->id());
+    return dimension() == 3 ? core_.mesh.is_ghost(c.index()) : has_infinite_vertex(c.index());
   }
   // Dimension 2: facet (c, 3) is the triangle c.
   bool is_infinite(Cell_handle c, int i) const
   {
     CGAL_precondition(dimension() == 3 || (dimension() == 2 && i == 3));
-    if(dimension() == 2) return has_infinite_vertex(c->id());
+    if(dimension() == 2) return has_infinite_vertex(c.index());
     return is_infinite(c) && i != 3; // the ghost vertex is always vertex 3
   }
   bool is_infinite(const Facet& f) const { return is_infinite(f.first, f.second); }
@@ -681,7 +709,7 @@ public:
 
   int mirror_index(Cell_handle c, int i) const
   {
-    return Fast_Delaunay_triangulation_3_internal::facet_of(core_.mesh.neighbor_code(c->id(), i));
+    return Fast_Delaunay_triangulation_3_internal::facet_of(core_.mesh.neighbor_code(c.index(), i));
   }
   Vertex_handle mirror_vertex(Cell_handle c, int i) const
   {
@@ -727,7 +755,7 @@ public:
     if(could_lock_zone) *could_lock_zone = true;
     const double q[3] = {p.x(), p.y(), p.z()};
     const Fast_Delaunay_triangulation_3_internal::Location loc =
-        Fast_Delaunay_triangulation_3_internal::locate(core_.mesh, start ? start->id() : Tet_id(-1), q);
+        Fast_Delaunay_triangulation_3_internal::locate(core_.mesh, start ? start.index() : Tet_id(-1), q);
     lt = static_cast<Locate_type>(loc.type);
     if(loc.li >= 0) li = loc.li;
     if(loc.lj >= 0) lj = loc.lj;
@@ -759,7 +787,7 @@ public:
     CGAL_precondition(dimension() == 3);
     Fast_Delaunay_triangulation_3_internal::Location_type type;
     const Bounded_side side =
-        Fast_Delaunay_triangulation_3_internal::side_of_cell(traits_, core_.mesh, c->id(), p, type, i, j);
+        Fast_Delaunay_triangulation_3_internal::side_of_cell(traits_, core_.mesh, c.index(), p, type, i, j);
     lt = static_cast<Locate_type>(type);
     return side;
   }
@@ -768,7 +796,7 @@ public:
     CGAL_precondition(dimension() == 3);
     const double q[3] = {p.x(), p.y(), p.z()};
     return static_cast<Bounded_side>(
-        Fast_Delaunay_triangulation_3_internal::side_of_sphere(core_.mesh, c->id(), q, perturb));
+        Fast_Delaunay_triangulation_3_internal::side_of_sphere(core_.mesh, c.index(), q, perturb));
   }
   Vertex_handle nearest_vertex(const Point& p, Cell_handle start = Cell_handle()) const
   {
@@ -786,12 +814,12 @@ public:
   }
   bool is_vertex(Vertex_handle v) const
   {
-    return v->triangulation() == this && (is_infinite(v) || v->id() < number_of_vertices());
+    return v.owner() == this && (is_infinite(v) || v.index() < number_of_vertices());
   }
   bool is_cell(Cell_handle c) const
   {
-    return dimension() == 3 && c->triangulation() == this && c->id() < core_.mesh.number_of_slots() &&
-           core_.mesh.is_live(c->id());
+    return dimension() == 3 && c.owner() == this && c.index() < core_.mesh.number_of_slots() &&
+           core_.mesh.is_live(c.index());
   }
   // Below dimension 3 these scan all cells (lower dimensions are a corner
   // case).  Like CGAL 5.5, which looks among the cells around u and finds
@@ -1027,7 +1055,7 @@ public:
   Cell_circulator incident_cells(Cell_handle c, int i, int j, Cell_handle start) const
   {
     CGAL_precondition(dimension() == 3 && start->has_vertex(c->vertex(i)) && start->has_vertex(c->vertex(j)));
-    return Cell_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), start->id());
+    return Cell_circulator(this, c->vertex(i).index(), c->vertex(j).index(), start.index());
   }
   Cell_circulator incident_cells(const Edge& e, Cell_handle start) const
   {
@@ -1036,7 +1064,7 @@ public:
   Facet_circulator incident_facets(Cell_handle c, int i, int j) const
   {
     CGAL_precondition(dimension() == 3);
-    return Facet_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), c->id());
+    return Facet_circulator(this, c->vertex(i).index(), c->vertex(j).index(), c.index());
   }
   Facet_circulator incident_facets(const Edge& e) const { return incident_facets(e.first, e.second, e.third); }
   // Starting at facet f of start: from start if f is the facet that follows
@@ -1046,7 +1074,7 @@ public:
     CGAL_precondition(dimension() == 3);
     const int si = start->index(c->vertex(i)), sj = start->index(c->vertex(j));
     const Cell_handle from = f == next_around_edge(si, sj) ? start : start->neighbor(f);
-    return Facet_circulator(this, c->vertex(i)->id(), c->vertex(j)->id(), from->id());
+    return Facet_circulator(this, c->vertex(i).index(), c->vertex(j).index(), from.index());
   }
   Facet_circulator incident_facets(const Edge& e, Cell_handle start, int f) const
   {
@@ -1178,7 +1206,8 @@ public:
     incident_cells_.clear();
     // The file carries no infos: every vertex and cell starts with Info().
     vertex_infos_.clear();
-    vertex_infos_.resize(number_of_vertices());
+    user_vertices_.clear();
+    vertices_added();
     cell_infos_.clear();
     return true;
   }
@@ -1196,6 +1225,9 @@ public:
   Info& vertex_info(Vertex_id v) const { return vertex_infos_.at(v); }
   template <class Info = Cell_info>
   Info& cell_info(Tet_id c) const { return cell_infos_.at(core_.mesh, c); }
+  // Only with a user vertex base (see User_vertex_base.h).
+  template <class Record = Vertex>
+  Record& user_vertex(Vertex_id v) const { return user_vertices_.at(v); }
   Cell_handle incident_cell_of(Vertex_id v) const
   {
     if(dimension() < 0) return Cell_handle();
@@ -1267,7 +1299,7 @@ private:
     if(dimension() < 3) return insert(p);
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
-    const Vertex_id v = core_.insert_one_from(xyz, start ? start->id() : Tet_id(-1), ball);
+    const Vertex_id v = core_.insert_one_from(xyz, start ? start.index() : Tet_id(-1), ball);
     after_single_insertion(ball);
     return Vertex_handle(this, v);
   }
@@ -1277,7 +1309,7 @@ private:
   // `v = insert(p, v)` idiom never rebuilds it.
   void after_single_insertion(const std::vector<Tet_id>& ball)
   {
-    vertex_infos_.resize(number_of_vertices());
+    vertices_added();
     if(incident_cells_.empty()) return;
     incident_cells_.resize(number_of_vertices());
     for(Tet_id t : ball)
@@ -1285,6 +1317,12 @@ private:
         const Vertex_id w = core_.mesh.vertex(t, i);
         if(w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[w] = t;
       }
+  }
+  // New vertices get Info() and a default user vertex base.
+  void vertices_added()
+  {
+    vertex_infos_.resize(number_of_vertices());
+    user_vertices_.resize(this, number_of_vertices());
   }
   Cell_handle hint_cell(Vertex_handle hint) const
   {
@@ -1308,14 +1346,14 @@ private:
   // containers: the infinite vertex is created first).
   static std::uint64_t handle_order(Vertex_handle v)
   {
-    return v->id() == Fast_Delaunay_triangulation_3_internal::ghost_vertex ? 0 : std::uint64_t(v->id()) + 1;
+    return v.index() == Fast_Delaunay_triangulation_3_internal::ghost_vertex ? 0 : std::uint64_t(v.index()) + 1;
   }
 
   void cells_around(Vertex_handle v, std::vector<Tet_id>& cells) const
   {
     CGAL_precondition(dimension() == 3);
-    Fast_Delaunay_triangulation_3_internal::cells_around_vertex(core_.mesh, incident_cell_of(v->id())->id(),
-                                                                v->id(), cells);
+    Fast_Delaunay_triangulation_3_internal::cells_around_vertex(core_.mesh, incident_cell_of(v.index()).index(),
+                                                                v.index(), cells);
   }
   template <class OutputIterator>
   OutputIterator cells_around(Vertex_handle v, OutputIterator out, bool finite_only) const
@@ -1335,7 +1373,7 @@ private:
     cells_around(v, cells);
     for(Tet_id t : cells)
       for(int f = 0; f < 4; ++f) {
-        if(m.vertex(t, f) == v->id() || m.neighbor(t, f) < t) continue;
+        if(m.vertex(t, f) == v.index() || m.neighbor(t, f) < t) continue;
         if(finite_only && m.is_ghost(t) && f != 3) continue;
         *out++ = Facet(Cell_handle(this, t), f);
       }
@@ -1348,13 +1386,13 @@ private:
     std::vector<Tet_id> cells, cell_of_edge;
     std::vector<Vertex_id> vertices;
     cells_around(v, cells);
-    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(m, cells, v->id(), vertices, &cell_of_edge);
+    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(m, cells, v.index(), vertices, &cell_of_edge);
     for(std::size_t k = 0; k < vertices.size(); ++k) {
       // Only the other vertex is tested: CGAL lists every edge of the
       // infinite vertex among its "finite" incident edges too.
       if(finite_only && vertices[k] == Fast_Delaunay_triangulation_3_internal::ghost_vertex) continue;
       const Tet_id t = cell_of_edge[k];
-      *out++ = Edge(Cell_handle(this, t), Fast_Delaunay_triangulation_3_internal::index_of(m, t, v->id()),
+      *out++ = Edge(Cell_handle(this, t), Fast_Delaunay_triangulation_3_internal::index_of(m, t, v.index()),
                     Fast_Delaunay_triangulation_3_internal::index_of(m, t, vertices[k]));
     }
     return out;
@@ -1365,7 +1403,7 @@ private:
     std::vector<Tet_id> cells;
     std::vector<Vertex_id> vertices;
     cells_around(v, cells);
-    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(core_.mesh, cells, v->id(), vertices, nullptr);
+    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(core_.mesh, cells, v.index(), vertices, nullptr);
     for(Vertex_id w : vertices)
       if(!finite_only || w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) *out++ = Vertex_handle(this, w);
     return out;
@@ -1378,7 +1416,7 @@ private:
     incident_cells_.clear();
     core_.partitions = partitions_for_insertion();
     const std::size_t added = core_.insert(xyz.data(), n, vertex_of_input);
-    vertex_infos_.resize(number_of_vertices());
+    vertices_added();
     return static_cast<std::ptrdiff_t>(added);
   }
 
@@ -1412,7 +1450,7 @@ private:
       if(!m.is_live(t)) continue;
       bool all = true;
       for(std::size_t k = 0; k <= N && all; ++k) {
-        const Vertex_id id = k == 0 ? u->id() : others[k - 1]->id();
+        const Vertex_id id = k == 0 ? u.index() : others[k - 1].index();
         index[k] = -1;
         for(int i = 0; i <= dimension(); ++i)
           if(m.vertex(t, i) == id) index[k] = i;
@@ -1453,6 +1491,8 @@ private:
   mutable std::vector<Tet_id> incident_cells_; // lazily built v->cell() cache
   Fast_Delaunay_triangulation_3_internal::Vertex_infos<Vertex_info> vertex_infos_;
   Fast_Delaunay_triangulation_3_internal::Cell_infos<Cell_info> cell_infos_;
+  Fast_Delaunay_triangulation_3_internal::User_vertices<typename std::conditional<has_user_vertex_base, Vertex, void>::type>
+      user_vertices_;
 };
 
 // Writes `tr` as CGAL::Triangulation_3's operator<< writes the same

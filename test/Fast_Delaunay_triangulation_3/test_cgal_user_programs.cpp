@@ -341,6 +341,55 @@ std::string adding_handles()
   return out.str();
 }
 
+// ---------------------------------------------------------------- a user base under an info, with an id()
+// Infos given with the points reach a user base layered below
+// Triangulation_vertex_base_with_info_3; the user's id() is not hidden.
+template <class GT, class Vb = CGAL::Triangulation_vertex_base_3<GT>>
+class Vertex_base_with_id : public Vb
+{
+public:
+  typedef typename Vb::Cell_handle Cell_handle;
+  typedef typename Vb::Point Point;
+
+  template <class TDS2>
+  struct Rebind_TDS
+  {
+    typedef typename Vb::template Rebind_TDS<TDS2>::Other Vb2;
+    typedef Vertex_base_with_id<GT, Vb2> Other;
+  };
+
+  std::size_t& id() { return id_; }
+  std::size_t id() const { return id_; }
+
+private:
+  std::size_t id_ = 0;
+};
+
+typedef CGAL::Triangulation_vertex_base_with_info_3<unsigned, K, Vertex_base_with_id<K>> Vb_info_id;
+typedef CGAL::Triangulation_data_structure_3<Vb_info_id, CGAL::Delaunay_triangulation_cell_base_3<K>> Tds_info_id;
+
+template <class Triangulation>
+std::string info_over_user_base()
+{
+  std::vector<std::pair<Point, unsigned>> pairs;
+  std::vector<Point> points = random_points(60, 11);
+  for(unsigned i = 0; i < points.size(); ++i) pairs.push_back(std::make_pair(points[i], i));
+  Triangulation T(pairs.begin(), pairs.end());
+  // Ids in the order of the infos, then read back through the cells.
+  for(typename Triangulation::Vertex_handle v : T.finite_vertex_handles()) v->id() = 1000 + v->info();
+  T.insert(Point(0.5, 0.5, 0.5));
+  std::vector<std::string> lines;
+  for(typename Triangulation::Cell_handle c : T.finite_cell_handles()) {
+    std::ostringstream os;
+    std::vector<std::size_t> ids;
+    for(int i = 0; i < 4; ++i) ids.push_back(c->vertex(i)->id());
+    std::sort(ids.begin(), ids.end());
+    for(std::size_t id : ids) os << id << ' ';
+    lines.push_back(os.str());
+  }
+  return check_infos(T, points) + sorted_lines(lines);
+}
+
 // ---------------------------------------------------------------- find_conflicts
 template <class Triangulation>
 std::string conflicts()
@@ -412,6 +461,28 @@ TEST(CgalUserPrograms, ColorInfo)
   typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds_color> Fast_color;
   FDT3_SAME_OUTPUT(Cgal_color, Fast_color, color_by_degree);
 }
+
+TEST(CgalUserPrograms, AddingHandles)
+{
+  typedef CGAL::Delaunay_triangulation_3<K, Tds_handles> Cgal_handles;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds_handles> Fast_handles;
+  FDT3_SAME_OUTPUT(Cgal_handles, Fast_handles, adding_handles);
+}
+
+TEST(CgalUserPrograms, InfoOverUserBase)
+{
+  typedef CGAL::Delaunay_triangulation_3<K, Tds_info_id> Cgal_info_id;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds_info_id> Fast_info_id;
+  FDT3_SAME_OUTPUT(Cgal_info_id, Fast_info_id, info_over_user_base);
+}
+
+// Without a user base the vertices stay facades over the flat arrays.
+static_assert(std::is_same<Fast_dt::Vertex, CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<Fast_dt>>::value,
+              "default vertices are facades");
+static_assert(std::is_same<CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>::Vertex,
+                           CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<
+                               CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>>>::value,
+              "vertices with an info only are facades");
 
 TEST(CgalUserPrograms, FindConflicts) { FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, conflicts); }
 

@@ -32,8 +32,11 @@ triangulation do not come from `Gt`: they are the package's own filtered
 predicates, whose exact stage is `Exact_predicates_inexact_constructions_kernel`'s.
 
 \tparam Tds_ is accepted so that the class can be named with the template
-arguments of `Delaunay_triangulation_3`, and is ignored: the combinatorics
-always live in the package's flat arrays. Default: `Default`.
+arguments of `Delaunay_triangulation_3`; the combinatorics always live in
+the package's flat arrays, and only its vertex and cell bases are read: an
+info (`Triangulation_vertex_base_with_info_3`,
+`Triangulation_cell_base_with_info_3`), a user vertex base with members of its
+own, and the concurrency tag. Default: `Default`.
 
 \tparam Location_policy is accepted and ignored (insertion always walks from
 the last inserted point or the hint): `Fast_location` or `Compact_location`,
@@ -45,6 +48,11 @@ Default: `Default`.
 
 <b>Differences from `Delaunay_triangulation_3`</b>
 
+- A user vertex base with members of its own (CGAL's `Rebind_TDS`
+  protocol) works, its object kept per vertex beside the flat arrays; its
+  `point()`, `cell()`, `info()` and `is_valid()` are the triangulation's, and
+  `set_point()` / `set_cell()` are deleted. A user cell base with members of
+  its own is not supported (only an info).
 - Vertices cannot be removed or moved: there is no `remove()` or `move()`.
   The segment traverser and the `Simplex` type are not provided either.
 - Point location, the conflict zone, the incident / adjacent queries and
@@ -123,6 +131,8 @@ A vertex, as seen through the triangulation: the value type of the vertex
 iterators and the object a `Vertex_handle` points to. Its members are
 `Point point() const`, `Cell_handle cell() const` (an incident cell, or a null
 handle in dimension -1) and `bool is_valid(bool = false, int = 0) const`.
+With a user vertex base (see the manual), `Vertex` derives from that base
+rebound to this class's handles, so its members are members of `Vertex`.
 */
 typedef unspecified_type Vertex;
 

@@ -160,12 +160,12 @@ public:
 
   Cell_circulator_around_edge& operator++()
   {
-    pos_ = Cell_handle(tr(), next_cell_around_edge(tr()->flat_storage(), pos_->id(), a_, b_));
+    pos_ = Cell_handle(tr(), next_cell_around_edge(tr()->flat_storage(), pos_.index(), a_, b_));
     return *this;
   }
   Cell_circulator_around_edge& operator--()
   {
-    pos_ = Cell_handle(tr(), next_cell_around_edge(tr()->flat_storage(), pos_->id(), b_, a_));
+    pos_ = Cell_handle(tr(), next_cell_around_edge(tr()->flat_storage(), pos_.index(), b_, a_));
     return *this;
   }
   Cell_circulator_around_edge operator++(int) { Cell_circulator_around_edge old = *this; ++*this; return old; }
@@ -183,7 +183,7 @@ public:
   friend bool operator!=(const Cell_circulator_around_edge& x, const Cell_handle& c) { return x.pos_ != c; }
 
 private:
-  const Tr* tr() const { return pos_->triangulation(); }
+  const Tr* tr() const { return pos_.owner(); }
   Vertex_id a_ = 0, b_ = 0;
   Cell_handle pos_;
 };
@@ -209,8 +209,8 @@ public:
   Facet operator*() const
   {
     const Cell_handle c = cells_;
-    const Flat_storage& m = c->triangulation()->flat_storage();
-    return Facet(c, Triangulation_utils_3::next_around_edge(index_of(m, c->id(), a_), index_of(m, c->id(), b_)));
+    const Flat_storage& m = c.owner()->flat_storage();
+    return Facet(c, Triangulation_utils_3::next_around_edge(index_of(m, c.index(), a_), index_of(m, c.index(), b_)));
   }
   struct Arrow { Facet f; const Facet* operator->() const { return &f; } };
   Arrow operator->() const { return Arrow{**this}; }
@@ -241,15 +241,15 @@ bool find_cell_with(const Tr& tr, typename Tr::Vertex_handle u,
 {
   const Flat_storage& m = tr.flat_storage();
   std::vector<Tet_id> cells;
-  cells_around_vertex(m, tr.incident_cell_of(u->id())->id(), u->id(), cells);
+  cells_around_vertex(m, tr.incident_cell_of(u.index()).index(), u.index(), cells);
   for(Tet_id t : cells) {
     bool all = true;
     for(std::size_t k = 0; k < N && all; ++k) {
-      index[k + 1] = index_of(m, t, others[k]->id());
+      index[k + 1] = index_of(m, t, others[k].index());
       all = index[k + 1] >= 0;
     }
     if(!all) continue;
-    index[0] = index_of(m, t, u->id());
+    index[0] = index_of(m, t, u.index());
     c = typename Tr::Cell_handle(&tr, t);
     return true;
   }

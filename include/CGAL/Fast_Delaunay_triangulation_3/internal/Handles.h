@@ -15,6 +15,8 @@
 #include <cstddef>
 #include <functional>
 #include <iterator>
+#include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
@@ -91,7 +93,7 @@ public:
   bool has_vertex(Vertex_handle v, int& i) const
   {
     for(int k = 0; k < 4; ++k)
-      if(mesh().vertex(id_, k) == v->id()) { i = k; return true; }
+      if(mesh().vertex(id_, k) == v.index()) { i = k; return true; }
     return false;
   }
   bool has_neighbor(Cell_handle c) const
@@ -102,7 +104,7 @@ public:
   bool has_neighbor(Cell_handle c, int& i) const
   {
     for(int k = 0; k <= tr_->dimension(); ++k)
-      if(mesh().neighbor(id_, k) == c->id()) { i = k; return true; }
+      if(mesh().neighbor(id_, k) == c.index()) { i = k; return true; }
     return false;
   }
   bool is_valid(bool = false, int = 0) const { return tr_ != nullptr && mesh().is_live(id_); }
@@ -119,73 +121,81 @@ private:
   Tet_id id_ = 0;
 };
 
-// A handle: holds its facade by value, so `->` needs no storage elsewhere.
-// Ordered and hashed by index, so handles work as std::map / unordered_map keys.
+// Equality, order and hash of handles by (triangulation, index), so handles
+// work as std::map / unordered_map keys.  Handle provides owner() and index().
+template <class Handle>
+class Handle_order
+{
+public:
+  friend bool operator==(const Handle& a, const Handle& b)
+  {
+    return a.owner() == b.owner() && a.index() == b.index();
+  }
+  friend bool operator!=(const Handle& a, const Handle& b) { return !(a == b); }
+  friend bool operator==(const Handle& a, std::nullptr_t) { return !a; }
+  friend bool operator!=(const Handle& a, std::nullptr_t) { return bool(a); }
+  friend bool operator<(const Handle& a, const Handle& b)
+  {
+    if(a.owner() != b.owner()) return std::less<const void*>()(a.owner(), b.owner());
+    return a.index() < b.index();
+  }
+  friend bool operator>(const Handle& a, const Handle& b) { return b < a; }
+  friend bool operator<=(const Handle& a, const Handle& b) { return !(b < a); }
+  friend bool operator>=(const Handle& a, const Handle& b) { return !(a < b); }
+  friend std::size_t hash_value(const Handle& h) { return std::hash<decltype(h.index())>()(h.index()); }
+};
+
+// A handle that holds its facade by value, so `->` needs no storage elsewhere.
 template <class Facade, class Index>
-class Flat_handle
+class Flat_handle : public Handle_order<Flat_handle<Facade, Index>>
 {
 public:
   typedef Facade value_type;
   typedef typename std::remove_cv<typename std::remove_pointer<decltype(
-      std::declval<Facade>().triangulation())>::type>::type Tr;
+      std::declval<Facade>().triangulation())>::type>::type Triangulation;
 
   Flat_handle() = default;
   Flat_handle(std::nullptr_t) {}
-  Flat_handle(const Tr* tr, Index id) : facade_(tr, id) {}
+  Flat_handle(const Triangulation* tr, Index id) : facade_(tr, id) {}
 
   const Facade* operator->() const { return &facade_; }
   const Facade& operator*() const { return facade_; }
   explicit operator bool() const { return facade_.triangulation() != nullptr; }
 
-  friend bool operator==(const Flat_handle& a, const Flat_handle& b)
-  {
-    return a.facade_.triangulation() == b.facade_.triangulation() && a.facade_.id() == b.facade_.id();
-  }
-  friend bool operator!=(const Flat_handle& a, const Flat_handle& b) { return !(a == b); }
-  friend bool operator==(const Flat_handle& a, std::nullptr_t) { return !a; }
-  friend bool operator!=(const Flat_handle& a, std::nullptr_t) { return bool(a); }
-  friend bool operator<(const Flat_handle& a, const Flat_handle& b)
-  {
-    if(a.facade_.triangulation() != b.facade_.triangulation())
-      return std::less<const void*>()(a.facade_.triangulation(), b.facade_.triangulation());
-    return a.facade_.id() < b.facade_.id();
-  }
-  friend bool operator>(const Flat_handle& a, const Flat_handle& b) { return b < a; }
-  friend bool operator<=(const Flat_handle& a, const Flat_handle& b) { return !(b < a); }
-  friend bool operator>=(const Flat_handle& a, const Flat_handle& b) { return !(a < b); }
-  friend std::size_t hash_value(const Flat_handle& h) { return std::hash<Index>()(h.facade_.id()); }
+  const Triangulation* owner() const { return facade_.triangulation(); }
+  Index index() const { return facade_.id(); }
 
 private:
   Facade facade_;
 };
 
 // Iterates over indices [0, end) that satisfy Tr's filter `Accept`, and
-// dereferences to the facade (as CGAL's iterators dereference to Vertex or
-// Cell); converts to the handle.
-template <class Facade, class Handle, class Index, class Accept>
+// dereferences as its handle does (to the vertex or cell, as CGAL's
+// iterators); converts to the handle.
+template <class Handle, class Index, class Accept>
 class Filtered_index_iterator
 {
 public:
   typedef std::forward_iterator_tag iterator_category;
-  typedef Facade value_type;
+  typedef decltype(*std::declval<const Handle&>()) reference;
+  typedef typename std::remove_reference<reference>::type value_type;
+  typedef value_type* pointer;
   typedef std::ptrdiff_t difference_type;
-  typedef const Facade* pointer;
-  typedef const Facade& reference;
-  typedef typename Handle::Tr Tr;
+  typedef typename Handle::Triangulation Tr;
 
   Filtered_index_iterator() = default;
-  Filtered_index_iterator(const Tr* tr, Index id, Index end) : facade_(tr, id), end_(end)
+  Filtered_index_iterator(const Tr* tr, Index id, Index end) : handle_(tr, id), end_(end)
   {
     skip();
   }
 
-  const Facade& operator*() const { return facade_; }
-  const Facade* operator->() const { return &facade_; }
-  operator Handle() const { return Handle(facade_.triangulation(), facade_.id()); }
+  reference operator*() const { return *handle_; }
+  pointer operator->() const { return handle_.operator->(); }
+  operator Handle() const { return handle_; }
 
   Filtered_index_iterator& operator++()
   {
-    facade_ = Facade(facade_.triangulation(), facade_.id() + 1);
+    handle_ = Handle(handle_.owner(), handle_.index() + 1);
     skip();
     return *this;
   }
@@ -197,7 +207,7 @@ public:
   }
   friend bool operator==(const Filtered_index_iterator& a, const Filtered_index_iterator& b)
   {
-    return a.facade_.id() == b.facade_.id();
+    return a.handle_.index() == b.handle_.index();
   }
   friend bool operator!=(const Filtered_index_iterator& a, const Filtered_index_iterator& b)
   {
@@ -207,12 +217,12 @@ public:
 private:
   void skip()
   {
-    Index id = facade_.id();
-    while(id < end_ && !Accept()(*facade_.triangulation(), id)) ++id;
-    facade_ = Facade(facade_.triangulation(), id);
+    Index id = handle_.index();
+    while(id < end_ && !Accept()(*handle_.owner(), id)) ++id;
+    handle_ = Handle(handle_.owner(), id);
   }
 
-  Facade facade_;
+  Handle handle_;
   Index end_ = 0;
 };
 
