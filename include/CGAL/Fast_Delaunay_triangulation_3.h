@@ -18,6 +18,8 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Equality.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Segment_traverser.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Simplex.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_io.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/User_vertex_base.h>
@@ -328,6 +330,12 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Cell_circulator_around_edge<Self> Cell_circulator;
   typedef Fast_Delaunay_triangulation_3_internal::Facet_circulator_around_edge<Self> Facet_circulator;
 
+  // A vertex, edge, facet or cell as one value (CGAL's Triangulation_simplex_3).
+  typedef Fast_Delaunay_triangulation_3_internal::Simplex_3<Self> Simplex;
+  // The cells crossed by a segment (see Segment_traverser.h).
+  typedef Fast_Delaunay_triangulation_3_internal::Segment_cell_iterator<Self> Segment_cell_iterator;
+  typedef Iterator_range<Fast_Delaunay_triangulation_3_internal::Handle_iterator<Segment_cell_iterator, Cell_handle>>
+      Segment_traverser_cell_handles;
 
   // ---------------------------------------------------------------- creation
   explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits(),
@@ -624,6 +632,24 @@ public:
   OutputIterator vertices_in_conflict(const Point& p, Cell_handle c, OutputIterator res) const
   {
     return vertices_on_conflict_zone_boundary(p, c, res);
+  }
+
+  // ---------------------------------------------------------------- segment traverser (dimension 3)
+  // The cells crossed by the segment [p, q], from the cell of p to the cell
+  // of q, as CGAL's traverser gives them when p and q are in the convex hull
+  // and the segment meets no edge or vertex (general position).
+  Segment_cell_iterator segment_traverser_cells_begin(const Point& p, const Point& q,
+                                                      Cell_handle hint = Cell_handle()) const
+  {
+    return Segment_cell_iterator(this, p, q, hint);
+  }
+  Segment_cell_iterator segment_traverser_cells_end() const { return Segment_cell_iterator(); }
+  Segment_traverser_cell_handles segment_traverser_cell_handles(const Point& p, const Point& q,
+                                                                Cell_handle hint = Cell_handle()) const
+  {
+    typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<Segment_cell_iterator, Cell_handle> Handles;
+    return Segment_traverser_cell_handles(Handles(segment_traverser_cells_begin(p, q, hint)),
+                                          Handles(segment_traverser_cells_end()));
   }
 
   // ---------------------------------------------------------------- access

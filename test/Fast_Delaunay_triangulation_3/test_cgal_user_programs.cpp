@@ -425,6 +425,87 @@ std::string conflicts()
   return out.str();
 }
 
+// ---------------------------------------------------------------- simplices
+// Every face as a Simplex, reached from several cells: a set holds each face
+// once, and the conversions give the face back.
+template <class Triangulation>
+std::string simplices()
+{
+  typedef typename Triangulation::Simplex Simplex;
+  typedef typename Triangulation::Vertex_handle Vertex_handle;
+  typedef typename Triangulation::Cell_handle Cell_handle;
+  typedef typename Triangulation::Edge Edge;
+  typedef typename Triangulation::Facet Facet;
+  std::ostringstream out;
+  std::vector<Point> points = random_points(80, 13);
+  Triangulation T(points.begin(), points.end());
+
+  std::set<Simplex> faces;
+  std::size_t representations = 0;
+  for(Cell_handle c : T.finite_cell_handles()) {
+    faces.insert(Simplex(c));
+    for(int i = 0; i < 4; ++i) {
+      faces.insert(Simplex(c->vertex(i)));
+      faces.insert(Simplex(Facet(c, i)));
+      faces.insert(Simplex(T.mirror_facet(Facet(c, i))));
+      for(int j = 0; j < 4; ++j)
+        if(i != j) faces.insert(Simplex(Edge(c, i, j)));
+      representations += 1 + 2 + 3 + 4;
+    }
+  }
+  std::size_t count[4] = {0, 0, 0, 0};
+  bool round_trip = true;
+  for(const Simplex& s : faces) {
+    ++count[s.dimension()];
+    switch(s.dimension()) {
+      case 0: { Vertex_handle v = s; round_trip = round_trip && Simplex(v) == s; break; }
+      case 1: { Edge e = s; round_trip = round_trip && Simplex(Edge(e.first, e.third, e.second)) == s; break; }
+      case 2: { Facet f = s; round_trip = round_trip && Simplex(T.mirror_facet(f)) == s; break; }
+      case 3: { Cell_handle c = s; round_trip = round_trip && c->has_vertex(c->vertex(0)); break; }
+    }
+  }
+  out << "representations " << (representations > faces.size()) << " vertices " << count[0] << " edges " << count[1]
+      << " facets " << count[2] << " cells " << count[3] << " round trip " << round_trip << '\n';
+  out << "counts " << T.number_of_vertices() << ' ' << T.number_of_edges() << ' ' << T.number_of_facets() << ' '
+      << T.number_of_cells() << '\n';
+  // Edges and facets from the iterators are the same faces.
+  std::size_t found = 0;
+  for(typename Triangulation::Finite_edges_iterator e = T.finite_edges_begin(); e != T.finite_edges_end(); ++e)
+    found += faces.count(Simplex(*e));
+  for(typename Triangulation::Finite_facets_iterator f = T.finite_facets_begin(); f != T.finite_facets_end(); ++f)
+    found += faces.count(Simplex(*f));
+  out << "iterated faces found " << found << " of " << T.number_of_finite_edges() + T.number_of_finite_facets()
+      << '\n';
+  out << "undefined < vertex " << (Simplex() < Simplex(T.finite_vertices_begin())) << '\n';
+  return out.str();
+}
+
+// ---------------------------------------------------------------- segment traverser
+template <class Triangulation>
+std::string segment_traverser()
+{
+  typedef typename Triangulation::Cell_handle Cell_handle;
+  std::ostringstream out;
+  std::vector<Point> points = random_points(400, 15);
+  Triangulation T(points.begin(), points.end());
+  std::vector<Point> ends = random_points(20, 16);
+  for(std::size_t k = 0; k + 1 < ends.size(); k += 2) {
+    const Point p(ends[k].x() / 2, ends[k].y() / 2, ends[k].z() / 2);
+    const Point q(ends[k + 1].x() / 2, ends[k + 1].y() / 2, ends[k + 1].z() / 2);
+    typename Triangulation::Segment_cell_iterator ct = T.segment_traverser_cells_begin(p, q);
+    typename Triangulation::Segment_cell_iterator end = T.segment_traverser_cells_end();
+    std::size_t cells = 0, infinite = 0;
+    for(; ct != end; ++ct) {
+      Cell_handle c = ct;
+      ++cells;
+      if(T.is_infinite(c)) ++infinite;
+    }
+    out << "segment " << k / 2 << ": " << cells << " cells, " << infinite << " infinite\n";
+    for(Cell_handle c : T.segment_traverser_cell_handles(p, q)) out << "  " << cell_text(T, c) << '\n';
+  }
+  return out.str();
+}
+
 // ---------------------------------------------------------------- the tests
 template <class Cgal, class Fast, class Program>
 void expect_same_output(Program program_of)
@@ -485,5 +566,15 @@ static_assert(std::is_same<CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>::Ve
               "vertices with an info only are facades");
 
 TEST(CgalUserPrograms, FindConflicts) { FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, conflicts); }
+
+TEST(CgalUserPrograms, Simplices) { FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, simplices); }
+
+TEST(CgalUserPrograms, SegmentTraverser)
+{
+  FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, segment_traverser);
+  // The walks cross facets: more cells listed than segments.
+  const std::string text = segment_traverser<Fast_dt>();
+  EXPECT_GT(std::count(text.begin(), text.end(), '['), 30);
+}
 
 } // namespace
