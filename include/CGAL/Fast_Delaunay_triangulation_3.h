@@ -22,7 +22,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Simplex.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_io.h>
-#include <CGAL/Fast_Delaunay_triangulation_3/internal/User_vertex_base.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/User_bases.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_and_cell_infos.h>
 
 #include <CGAL/Default.h>
@@ -117,23 +117,32 @@ public:
   typedef std::ptrdiff_t difference_type;
 
 private:
-  // A user's vertex base with members of its own (see User_vertex_base.h):
-  // rebound to our handles, one per vertex in a side array; void for CGAL's
-  // own bases, whose vertices are plain facades over the flat arrays.
+  // A user's vertex or cell base with members of its own (see User_bases.h):
+  // rebound to our handles, one per vertex or cell in a side array; void for
+  // CGAL's own bases, whose vertices and cells are plain facades over the
+  // flat arrays.
   typedef typename Fast_Delaunay_triangulation_3_internal::Rebound_vertex_base<typename Arguments::Tds, Self>::type
       User_vertex_base;
+  typedef typename Fast_Delaunay_triangulation_3_internal::Rebound_cell_base<typename Arguments::Tds, Self>::type
+      User_cell_base;
   static constexpr bool has_user_vertex_base = !std::is_void<User_vertex_base>::value;
+  static constexpr bool has_user_cell_base = !std::is_void<User_cell_base>::value;
 
 public:
   typedef typename std::conditional<has_user_vertex_base,
                                     Fast_Delaunay_triangulation_3_internal::User_vertex<Self, User_vertex_base>,
                                     Fast_Delaunay_triangulation_3_internal::Vertex_facade<Self>>::type Vertex;
-  typedef Fast_Delaunay_triangulation_3_internal::Cell_facade<Self> Cell;
+  typedef typename std::conditional<has_user_cell_base,
+                                    Fast_Delaunay_triangulation_3_internal::User_cell<Self, User_cell_base>,
+                                    Fast_Delaunay_triangulation_3_internal::Cell_facade<Self>>::type Cell;
   typedef typename std::conditional<has_user_vertex_base,
-                                    Fast_Delaunay_triangulation_3_internal::User_vertex_handle<Self, Vertex>,
+                                    Fast_Delaunay_triangulation_3_internal::User_handle<Self, Vertex, Vertex_id>,
                                     Fast_Delaunay_triangulation_3_internal::Flat_handle<Vertex, Vertex_id>>::type
       Vertex_handle;
-  typedef Fast_Delaunay_triangulation_3_internal::Flat_handle<Cell, Tet_id> Cell_handle;
+  typedef typename std::conditional<has_user_cell_base,
+                                    Fast_Delaunay_triangulation_3_internal::User_handle<Self, Cell, Tet_id>,
+                                    Fast_Delaunay_triangulation_3_internal::Flat_handle<Cell, Tet_id>>::type
+      Cell_handle;
   // Info of Triangulation_vertex_base_with_info_3 / Triangulation_cell_base_with_info_3
   // in the data structure argument (void without): v->info(), c->info().
   typedef typename Fast_Delaunay_triangulation_3_internal::Vertex_info_of<typename Arguments::Tds>::type Vertex_info;
@@ -369,14 +378,15 @@ public:
   Fast_Delaunay_triangulation_3(const Self& other)
       : traits_(other.traits_), core_(other.core_), lock_ds_(other.lock_ds_), threads_(other.threads_),
         vertex_infos_(other.vertex_infos_), cell_infos_(other.cell_infos_),
-        user_vertices_(other.user_vertices_)
+        user_vertices_(other.user_vertices_), user_cells_(other.user_cells_)
   {
     user_vertices_.attach(this);
   }
   Fast_Delaunay_triangulation_3(Self&& other) noexcept
       : traits_(std::move(other.traits_)), core_(std::move(other.core_)), lock_ds_(other.lock_ds_),
         threads_(other.threads_), vertex_infos_(std::move(other.vertex_infos_)),
-        cell_infos_(std::move(other.cell_infos_)), user_vertices_(std::move(other.user_vertices_))
+        cell_infos_(std::move(other.cell_infos_)), user_vertices_(std::move(other.user_vertices_)),
+        user_cells_(std::move(other.user_cells_))
   {
     user_vertices_.attach(this);
     other.clear();
@@ -391,6 +401,7 @@ public:
       vertex_infos_ = other.vertex_infos_;
       cell_infos_ = other.cell_infos_;
       user_vertices_ = other.user_vertices_;
+      user_cells_ = other.user_cells_;
       user_vertices_.attach(this);
       incident_cells_.clear();
     }
@@ -406,6 +417,7 @@ public:
       vertex_infos_ = std::move(other.vertex_infos_);
       cell_infos_ = std::move(other.cell_infos_);
       user_vertices_ = std::move(other.user_vertices_);
+      user_cells_ = std::move(other.user_cells_);
       user_vertices_.attach(this);
       incident_cells_.clear();
       other.clear();
@@ -421,6 +433,7 @@ public:
     std::swap(vertex_infos_, other.vertex_infos_);
     std::swap(cell_infos_, other.cell_infos_);
     std::swap(user_vertices_, other.user_vertices_);
+    std::swap(user_cells_, other.user_cells_);
     user_vertices_.attach(this);
     other.user_vertices_.attach(&other);
     incident_cells_.clear();
@@ -432,6 +445,7 @@ public:
     vertex_infos_.clear();
     cell_infos_.clear();
     user_vertices_.clear();
+    user_cells_.clear();
     incident_cells_.clear();
   }
 
@@ -1235,6 +1249,7 @@ public:
     user_vertices_.clear();
     vertices_added();
     cell_infos_.clear();
+    user_cells_.clear();
     return true;
   }
 
@@ -1251,9 +1266,11 @@ public:
   Info& vertex_info(Vertex_id v) const { return vertex_infos_.at(v); }
   template <class Info = Cell_info>
   Info& cell_info(Tet_id c) const { return cell_infos_.at(core_.mesh, c); }
-  // Only with a user vertex base (see User_vertex_base.h).
+  // Only with a user vertex or cell base (see User_bases.h); the tag says which.
   template <class Record = Vertex>
-  Record& user_vertex(Vertex_id v) const { return user_vertices_.at(v); }
+  Record& user_record(const Vertex*, Vertex_id v) const { return user_vertices_.at(v); }
+  template <class Record = Cell>
+  Record& user_record(const Cell*, Tet_id c) const { return user_cells_.at(this, core_.mesh, c); }
   Cell_handle incident_cell_of(Vertex_id v) const
   {
     if(dimension() < 0) return Cell_handle();
@@ -1519,6 +1536,8 @@ private:
   Fast_Delaunay_triangulation_3_internal::Cell_infos<Cell_info> cell_infos_;
   Fast_Delaunay_triangulation_3_internal::User_vertices<typename std::conditional<has_user_vertex_base, Vertex, void>::type>
       user_vertices_;
+  Fast_Delaunay_triangulation_3_internal::User_cells<typename std::conditional<has_user_cell_base, Cell, void>::type>
+      user_cells_;
 };
 
 // Writes `tr` as CGAL::Triangulation_3's operator<< writes the same

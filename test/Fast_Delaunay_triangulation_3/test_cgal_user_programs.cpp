@@ -390,6 +390,80 @@ std::string info_over_user_base()
   return check_infos(T, points) + sorted_lines(lines);
 }
 
+// ---------------------------------------------------------------- a user cell base
+// Cells with members of their own: a depth (the number of facets to cross to
+// reach the outside) found by breadth-first search through c->neighbor(i),
+// with the cell it was reached from.
+template <class GT, class Cb = CGAL::Delaunay_triangulation_cell_base_3<GT>>
+class My_cell_base : public Cb
+{
+public:
+  typedef typename Cb::Vertex_handle Vertex_handle;
+  typedef typename Cb::Cell_handle Cell_handle;
+
+  template <class TDS2>
+  struct Rebind_TDS
+  {
+    typedef typename Cb::template Rebind_TDS<TDS2>::Other Cb2;
+    typedef My_cell_base<GT, Cb2> Other;
+  };
+
+  My_cell_base() {}
+  My_cell_base(Vertex_handle v0, Vertex_handle v1, Vertex_handle v2, Vertex_handle v3) : Cb(v0, v1, v2, v3) {}
+  My_cell_base(Vertex_handle v0, Vertex_handle v1, Vertex_handle v2, Vertex_handle v3, Cell_handle n0,
+               Cell_handle n1, Cell_handle n2, Cell_handle n3)
+      : Cb(v0, v1, v2, v3, n0, n1, n2, n3)
+  {}
+
+  int depth = -1;
+  Cell_handle parent;
+};
+
+typedef CGAL::Triangulation_data_structure_3<My_vertex_base<K>, My_cell_base<K>> Tds_cells;
+
+template <class Triangulation>
+std::string cell_depths()
+{
+  typedef typename Triangulation::Cell_handle Cell_handle;
+  std::ostringstream out;
+  std::vector<Point> points = random_points(150, 17);
+  Triangulation T(points.begin(), points.end());
+  std::vector<Cell_handle> front;
+  for(Cell_handle c : T.all_cell_handles())
+    if(T.is_infinite(c)) {
+      c->depth = 0;
+      front.push_back(c);
+    }
+  for(std::size_t k = 0; k < front.size(); ++k)
+    for(int i = 0; i < 4; ++i) {
+      Cell_handle n = front[k]->neighbor(i);
+      if(n->depth >= 0) continue;
+      n->depth = front[k]->depth + 1;
+      n->parent = front[k];
+      front.push_back(n);
+    }
+  std::vector<std::string> lines;
+  bool parents = true;
+  for(typename Triangulation::Finite_cells_iterator c = T.finite_cells_begin(); c != T.finite_cells_end(); ++c) {
+    std::ostringstream os;
+    os << cell_text(T, c) << " depth " << c->depth;
+    lines.push_back(os.str());
+    parents = parents && c->parent->depth + 1 == c->depth && c->has_neighbor(c->parent);
+  }
+  Cell_handle c = T.locate(Point(0, 0, 0));
+  const Point center = c->circumcenter();
+  out << "parents " << parents << " circumcenter " << (center == T.dual(c)) << '\n' << sorted_lines(lines);
+
+  // Cells made by an insertion are new: their members are default again.
+  typename Triangulation::Vertex_handle v = T.insert(Point(0.01, 0.02, 0.03));
+  std::vector<Cell_handle> ball;
+  T.incident_cells(v, std::back_inserter(ball));
+  int reset = 0;
+  for(Cell_handle b : ball) reset += b->depth == -1;
+  out << "new cells " << ball.size() << " reset " << reset << " valid " << T.is_valid() << '\n';
+  return out.str();
+}
+
 // ---------------------------------------------------------------- find_conflicts
 template <class Triangulation>
 std::string conflicts()
@@ -564,6 +638,15 @@ static_assert(std::is_same<CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>::Ve
                            CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<
                                CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>>>::value,
               "vertices with an info only are facades");
+
+TEST(CgalUserPrograms, UserCellBase)
+{
+  typedef CGAL::Delaunay_triangulation_3<K, Tds_cells> Cgal_cells;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds_cells> Fast_cells;
+  FDT3_SAME_OUTPUT(Cgal_cells, Fast_cells, cell_depths);
+  FDT3_SAME_OUTPUT(Cgal_cells, Fast_cells, adding_handles);
+  EXPECT_NE(cell_depths<Fast_cells>().find("parents 1 circumcenter 1"), std::string::npos);
+}
 
 TEST(CgalUserPrograms, FindConflicts) { FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, conflicts); }
 

@@ -48,11 +48,13 @@ Default: `Default`.
 
 <b>Differences from `Delaunay_triangulation_3`</b>
 
-- A user vertex base with members of its own (CGAL's `Rebind_TDS`
-  protocol) works, its object kept per vertex beside the flat arrays; its
-  `point()`, `cell()`, `info()` and `is_valid()` are the triangulation's, and
-  `set_point()` / `set_cell()` are deleted. A user cell base with members of
-  its own is not supported (only an info).
+- A user vertex or cell base with members of its own (CGAL's `Rebind_TDS`
+  protocol) works, one object per vertex or cell kept beside the flat arrays;
+  what CGAL's own bases provide (`point()`, `cell()`, `vertex()`,
+  `neighbor()`, `index()`, `info()`, `is_valid()`, `circumcenter()`) is the
+  triangulation's, and the setters (`set_point()`, `set_cell()`,
+  `set_vertex()`, `set_neighbor()`, ...) are deleted. A cell's base is reset
+  when an insertion replaces the cell, as CGAL's cells are new.
 - Vertices cannot be removed or moved: there is no `remove()` or `move()`.
 - `Simplex` (CGAL's `Triangulation_simplex_3`) is provided; its order sorts
   by dimension then by handles (CGAL's by addresses) and `operator<<` prints
@@ -140,6 +142,8 @@ iterators and the object a `Vertex_handle` points to. Its members are
 handle in dimension -1) and `bool is_valid(bool = false, int = 0) const`.
 With a user vertex base (see the manual), `Vertex` derives from that base
 rebound to this class's handles, so its members are members of `Vertex`.
+Likewise `Cell` with a user cell base; `Cell` also has `Point circumcenter()
+const` (dimension 3, finite cell).
 */
 typedef unspecified_type Vertex;
 

@@ -111,6 +111,8 @@ public:
   // Only with a cell base with info (see Vertex_and_cell_infos.h).
   template <class T = Tr>
   typename T::Cell_info& info() const { return tr_->cell_info(id_); }
+  // Dimension 3, finite cell: the centre of its circumscribed sphere.
+  typename Tr::Point circumcenter() const { return tr_->dual(Cell_handle(tr_, id_)); }
 
   Tet_id id() const { return id_; }
   const Tr* triangulation() const { return tr_; }
