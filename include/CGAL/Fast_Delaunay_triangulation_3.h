@@ -657,13 +657,19 @@ public:
   {
     return Segment_cell_iterator(this, p, q, hint);
   }
+  Segment_cell_iterator segment_traverser_cells_begin(Vertex_handle vs, Vertex_handle vt) const
+  {
+    return Segment_cell_iterator(this, vs, vt);
+  }
   Segment_cell_iterator segment_traverser_cells_end() const { return Segment_cell_iterator(); }
+  Segment_traverser_cell_handles segment_traverser_cell_handles(Vertex_handle vs, Vertex_handle vt) const
+  {
+    return cell_handles_of(segment_traverser_cells_begin(vs, vt));
+  }
   Segment_traverser_cell_handles segment_traverser_cell_handles(const Point& p, const Point& q,
                                                                 Cell_handle hint = Cell_handle()) const
   {
-    typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<Segment_cell_iterator, Cell_handle> Handles;
-    return Segment_traverser_cell_handles(Handles(segment_traverser_cells_begin(p, q, hint)),
-                                          Handles(segment_traverser_cells_end()));
+    return cell_handles_of(segment_traverser_cells_begin(p, q, hint));
   }
 
   // ---------------------------------------------------------------- access
@@ -1360,6 +1366,11 @@ private:
         const Vertex_id w = core_.mesh.vertex(t, i);
         if(w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[w] = t;
       }
+  }
+  Segment_traverser_cell_handles cell_handles_of(Segment_cell_iterator begin) const
+  {
+    typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<Segment_cell_iterator, Cell_handle> Handles;
+    return Segment_traverser_cell_handles(Handles(begin), Handles(segment_traverser_cells_end()));
   }
   // New vertices get Info() and a default user vertex base.
   void vertices_added()

@@ -577,6 +577,19 @@ std::string segment_traverser()
     out << "segment " << k / 2 << ": " << cells << " cells, " << infinite << " infinite\n";
     for(Cell_handle c : T.segment_traverser_cell_handles(p, q)) out << "  " << cell_text(T, c) << '\n';
   }
+  // Between vertices (a segment between two vertices stays in the hull).
+  std::vector<typename Triangulation::Vertex_handle> vertices;
+  for(const Point& p : ends) {
+    typename Triangulation::Vertex_handle v;
+    if(!T.is_vertex(p, v)) v = T.nearest_vertex(p);
+    vertices.push_back(v);
+  }
+  for(std::size_t k = 0; k + 1 < vertices.size(); k += 2) {
+    if(vertices[k] == vertices[k + 1]) continue;
+    out << "from " << vertices[k]->point() << " to " << vertices[k + 1]->point() << '\n';
+    for(Cell_handle c : T.segment_traverser_cell_handles(vertices[k], vertices[k + 1]))
+      out << "  " << cell_text(T, c) << '\n';
+  }
   return out.str();
 }
 

@@ -60,10 +60,10 @@ Default: `Default`.
   by dimension then by handles (CGAL's by addresses) and `operator<<` prints
   vertex indices. The segment traverser is provided for two points
   (`segment_traverser_cells_begin(p, q, hint)`, `segment_traverser_cells_end()`,
-  `segment_traverser_cell_handles(p, q, hint)`) in dimension 3, with both
-  points in the convex hull; it gives CGAL's cells when the segment meets no
-  vertex or edge. The traverser from two vertices and the simplex traverser
-  are not provided.
+  `segment_traverser_cell_handles(p, q, hint)`) and for two vertices, in
+  dimension 3, with both points in the convex hull; it gives CGAL's cells when
+  the segment meets no vertex or edge (but its ends). The simplex traverser
+  (`segment_traverser_simplices`) is not provided.
 - Point location, the conflict zone, the incident / adjacent queries and
   the circulators, the Voronoi duals and `is_Gabriel()` are provided in
   dimension 3 (the manual lists them); stream operators read and write

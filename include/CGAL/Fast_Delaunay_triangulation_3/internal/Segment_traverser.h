@@ -12,7 +12,9 @@
 // and orient(p, q, c, a) share one sign.  With p strictly inside the first
 // cell and pq crossing no edge or vertex (general position) exactly one facet
 // qualifies, so the cells are CGAL's.  Both points must lie in the convex
-// hull: the walk never enters an infinite cell.
+// hull: the walk never enters an infinite cell.  From vertex to vertex the
+// walk starts in the cell of the first vertex that the segment enters and
+// stops in the cell that has the second vertex.
 
 #ifndef CGAL_FDT3_INTERNAL_SEGMENT_TRAVERSER_H
 #define CGAL_FDT3_INTERNAL_SEGMENT_TRAVERSER_H
@@ -22,6 +24,7 @@
 
 #include <cstddef>
 #include <iterator>
+#include <vector>
 
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
@@ -46,6 +49,26 @@ public:
     CGAL_precondition(tr->dimension() == 3);
     cell_ = tr->locate(p, hint);
     CGAL_precondition(!tr->is_infinite(cell_));
+  }
+
+  // From vertex vs to vertex vt: the first cell is the cell of vs that the
+  // segment enters, the one whose cone at vs holds vt (vt inside each of its
+  // three facets through vs).
+  Segment_cell_iterator(const Tr* tr, typename Tr::Vertex_handle vs, typename Tr::Vertex_handle vt)
+      : tr_(tr), p_(vs->point()), q_(vt->point())
+  {
+    CGAL_precondition(tr->dimension() == 3 && vs != vt && !tr->is_infinite(vs) && !tr->is_infinite(vt));
+    std::vector<Cell_handle> around;
+    tr->finite_incident_cells(vs, std::back_inserter(around));
+    for(Cell_handle c : around) {
+      cell_ = c;
+      const int k = c->index(vs);
+      bool inside_cone = true;
+      for(int i = 0; i < 4 && inside_cone; ++i)
+        if(i != k) inside_cone = orientation_with_q_at(i) == POSITIVE;
+      if(inside_cone) return;
+    }
+    CGAL_assertion(false);
   }
 
   reference operator*() const { return *cell_; }
