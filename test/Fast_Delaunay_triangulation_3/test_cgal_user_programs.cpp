@@ -377,6 +377,9 @@ std::string info_over_user_base()
   Triangulation T(pairs.begin(), pairs.end());
   // Ids in the order of the infos, then read back through the cells.
   for(typename Triangulation::Vertex_handle v : T.finite_vertex_handles()) v->id() = 1000 + v->info();
+  // Before the next insertion: CGAL leaves the new vertex's unsigned info
+  // uninitialised.
+  const std::string infos = check_infos(T, points);
   T.insert(Point(0.5, 0.5, 0.5));
   std::vector<std::string> lines;
   for(typename Triangulation::Cell_handle c : T.finite_cell_handles()) {
@@ -387,7 +390,7 @@ std::string info_over_user_base()
     for(std::size_t id : ids) os << id << ' ';
     lines.push_back(os.str());
   }
-  return check_infos(T, points) + sorted_lines(lines);
+  return infos + sorted_lines(lines);
 }
 
 // ---------------------------------------------------------------- a user cell base
