@@ -19,6 +19,8 @@
 //       CGAL::Fast_mesher_3::mesh_surface_files({"part.off"}, options);
 //   CGAL::Fast_mesher_3::write_mesh("part.mesh", mesh);
 //
+// Also as CGAL's Mesh_complex_3_in_triangulation_3: mesh_surfaces_to_c3t3.
+//
 // Not yet (issue 5): batches are inserted by one thread; no user size
 // function; no mesh improvement (slivers stay); surfaces may not touch.
 
@@ -26,6 +28,7 @@
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Boundary_recovery.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/C3t3_conversion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Constrained_mesh.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Mesh_writers.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Quality_report.h>
@@ -83,8 +86,10 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-inline Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& options,
-                                  Mesher_statistics& stats)
+// `on_mesh(cm)` sees the final constrained mesh before it is extracted.
+template <class On_mesh>
+Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& options, Mesher_statistics& stats,
+                           On_mesh on_mesh)
 {
   typedef std::chrono::steady_clock Clock;
   Clock::time_point t0 = Clock::now();
@@ -118,10 +123,13 @@ inline Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options
     stats.aborted_points += pass.aborted;
   }
   stats.refinement_seconds = seconds_since(t1);
+  on_mesh(static_cast<const Constrained_mesh&>(cm));
   Tetrahedral_mesh mesh = extract_mesh(cm, soup);
   stats.total_seconds = seconds_since(t0);
   return mesh;
 }
+
+inline void nothing_more(const Constrained_mesh&) {}
 
 } // namespace mesher_detail
 
@@ -137,7 +145,7 @@ inline Tetrahedral_mesh mesh_surface_files(const std::vector<std::string>& paths
   const auto soup = Fast_Delaunay_triangulation_3_internal::mesher::read_surfaces(paths);
   Mesher_statistics stats;
   stats.input_seconds = mesher_detail::seconds_since(t0);
-  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats);
+  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats, mesher_detail::nothing_more);
   if(statistics) *statistics = stats;
   return mesh;
 }
@@ -152,7 +160,43 @@ inline Tetrahedral_mesh mesh_surfaces(const std::vector<std::array<double, 3>>& 
   const auto soup = Fast_Delaunay_triangulation_3_internal::mesher::surfaces_from_triangles(points, triangles);
   Mesher_statistics stats;
   stats.input_seconds = mesher_detail::seconds_since(t0);
-  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats);
+  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats, mesher_detail::nothing_more);
+  if(statistics) *statistics = stats;
+  return mesh;
+}
+
+// The same, and the mesh also as CGAL's Mesh_complex_3_in_triangulation_3
+// (convert_to_cgal.h's approach: cells created directly, the convex hull
+// included; tetrahedra of subdomain s in the complex with index s, input
+// triangles as surface facets with their surface number, or the pair of
+// subdomains when the patch index type is a pair).  The mesh is not
+// Delaunay: use a triangulation type that does not require it, such as
+// Tetrahedral_remeshing::Remeshing_triangulation_3.
+template <class C3t3>
+Tetrahedral_mesh mesh_surface_files_to_c3t3(const std::vector<std::string>& paths, C3t3& c3t3,
+                                            const Mesher_options& options = Mesher_options(),
+                                            Mesher_statistics* statistics = nullptr)
+{
+  const auto soup = Fast_Delaunay_triangulation_3_internal::mesher::read_surfaces(paths);
+  Mesher_statistics stats;
+  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats, [&](const auto& cm) {
+    Fast_Delaunay_triangulation_3_internal::mesher::constrained_mesh_to_c3t3(cm, soup, c3t3);
+  });
+  if(statistics) *statistics = stats;
+  return mesh;
+}
+
+template <class C3t3>
+Tetrahedral_mesh mesh_surfaces_to_c3t3(const std::vector<std::array<double, 3>>& points,
+                                       const std::vector<std::array<std::size_t, 3>>& triangles, C3t3& c3t3,
+                                       const Mesher_options& options = Mesher_options(),
+                                       Mesher_statistics* statistics = nullptr)
+{
+  const auto soup = Fast_Delaunay_triangulation_3_internal::mesher::surfaces_from_triangles(points, triangles);
+  Mesher_statistics stats;
+  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats, [&](const auto& cm) {
+    Fast_Delaunay_triangulation_3_internal::mesher::constrained_mesh_to_c3t3(cm, soup, c3t3);
+  });
   if(statistics) *statistics = stats;
   return mesh;
 }
