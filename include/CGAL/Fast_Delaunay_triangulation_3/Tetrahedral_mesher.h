@@ -129,7 +129,19 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& optio
   return mesh;
 }
 
-inline void nothing_more(const Constrained_mesh&) {}
+// Reads and checks the input with `read_soup`, then meshes it.
+template <class Read_soup, class On_mesh>
+Tetrahedral_mesh read_and_mesh(Read_soup read_soup, const Mesher_options& options, Mesher_statistics* statistics,
+                               On_mesh on_mesh)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const Surface_soup soup = read_soup();
+  Mesher_statistics stats;
+  stats.input_seconds = seconds_since(t0);
+  Tetrahedral_mesh mesh = mesh_soup(soup, options, stats, [&](const Constrained_mesh& cm) { on_mesh(cm, soup); });
+  if(statistics) *statistics = stats;
+  return mesh;
+}
 
 } // namespace mesher_detail
 
@@ -141,13 +153,8 @@ inline Tetrahedral_mesh mesh_surface_files(const std::vector<std::string>& paths
                                            const Mesher_options& options = Mesher_options(),
                                            Mesher_statistics* statistics = nullptr)
 {
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto soup = Fast_Delaunay_triangulation_3_internal::mesher::read_surfaces(paths);
-  Mesher_statistics stats;
-  stats.input_seconds = mesher_detail::seconds_since(t0);
-  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats, mesher_detail::nothing_more);
-  if(statistics) *statistics = stats;
-  return mesh;
+  return mesher_detail::read_and_mesh([&] { return mesher_detail::read_surfaces(paths); }, options, statistics,
+                                      [](const auto&, const auto&) {});
 }
 
 // The same for triangles in memory (indices into `points`).
@@ -156,13 +163,8 @@ inline Tetrahedral_mesh mesh_surfaces(const std::vector<std::array<double, 3>>& 
                                       const Mesher_options& options = Mesher_options(),
                                       Mesher_statistics* statistics = nullptr)
 {
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto soup = Fast_Delaunay_triangulation_3_internal::mesher::surfaces_from_triangles(points, triangles);
-  Mesher_statistics stats;
-  stats.input_seconds = mesher_detail::seconds_since(t0);
-  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats, mesher_detail::nothing_more);
-  if(statistics) *statistics = stats;
-  return mesh;
+  return mesher_detail::read_and_mesh([&] { return mesher_detail::surfaces_from_triangles(points, triangles); },
+                                      options, statistics, [](const auto&, const auto&) {});
 }
 
 // The same, and the mesh also as CGAL's Mesh_complex_3_in_triangulation_3
@@ -177,13 +179,10 @@ Tetrahedral_mesh mesh_surface_files_to_c3t3(const std::vector<std::string>& path
                                             const Mesher_options& options = Mesher_options(),
                                             Mesher_statistics* statistics = nullptr)
 {
-  const auto soup = Fast_Delaunay_triangulation_3_internal::mesher::read_surfaces(paths);
-  Mesher_statistics stats;
-  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats, [&](const auto& cm) {
-    Fast_Delaunay_triangulation_3_internal::mesher::constrained_mesh_to_c3t3(cm, soup, c3t3);
-  });
-  if(statistics) *statistics = stats;
-  return mesh;
+  return mesher_detail::read_and_mesh([&] { return mesher_detail::read_surfaces(paths); }, options, statistics,
+                                      [&](const auto& cm, const auto& soup) {
+                                        mesher_detail::constrained_mesh_to_c3t3(cm, soup, c3t3);
+                                      });
 }
 
 template <class C3t3>
@@ -192,13 +191,10 @@ Tetrahedral_mesh mesh_surfaces_to_c3t3(const std::vector<std::array<double, 3>>&
                                        const Mesher_options& options = Mesher_options(),
                                        Mesher_statistics* statistics = nullptr)
 {
-  const auto soup = Fast_Delaunay_triangulation_3_internal::mesher::surfaces_from_triangles(points, triangles);
-  Mesher_statistics stats;
-  Tetrahedral_mesh mesh = mesher_detail::mesh_soup(soup, options, stats, [&](const auto& cm) {
-    Fast_Delaunay_triangulation_3_internal::mesher::constrained_mesh_to_c3t3(cm, soup, c3t3);
-  });
-  if(statistics) *statistics = stats;
-  return mesh;
+  return mesher_detail::read_and_mesh([&] { return mesher_detail::surfaces_from_triangles(points, triangles); },
+                                      options, statistics, [&](const auto& cm, const auto& soup) {
+                                        mesher_detail::constrained_mesh_to_c3t3(cm, soup, c3t3);
+                                      });
 }
 
 // Writes .mesh (Medit), .vtu (VTK, ASCII) or .msh (Gmsh 4.1, ASCII), by extension.

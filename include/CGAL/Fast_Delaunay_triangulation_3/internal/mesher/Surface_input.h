@@ -259,13 +259,9 @@ inline void check_self_intersections(const Surface_soup& soup)
                        surface_detail::list_of(described));
 }
 
-// Reads, merges and checks; the checks run from the cheapest to the costliest.
-inline Surface_soup read_surfaces(const std::vector<std::string>& paths)
+// The checks, from the cheapest to the costliest, then the surface numbers.
+inline Surface_soup checked(Surface_soup soup)
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  for(const std::string& path : paths) read_soup_file(path, points, polygons);
-  Surface_soup soup = merge_soup(points, polygons);
   check_degenerate_triangles(soup);
   check_closed_oriented_manifold(soup);
   check_self_intersections(soup);
@@ -273,18 +269,21 @@ inline Surface_soup read_surfaces(const std::vector<std::string>& paths)
   return soup;
 }
 
-// The same checks on triangles given in memory.
+inline Surface_soup read_surfaces(const std::vector<std::string>& paths)
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  for(const std::string& path : paths) read_soup_file(path, points, polygons);
+  return checked(merge_soup(points, polygons));
+}
+
+// The same for triangles given in memory.
 inline Surface_soup surfaces_from_triangles(const std::vector<std::array<double, 3>>& points,
                                             const std::vector<std::array<std::size_t, 3>>& triangles)
 {
   std::vector<std::vector<std::size_t>> polygons;
   for(const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
-  Surface_soup soup = merge_soup(points, polygons);
-  check_degenerate_triangles(soup);
-  check_closed_oriented_manifold(soup);
-  check_self_intersections(soup);
-  number_surfaces(soup);
-  return soup;
+  return checked(merge_soup(points, polygons));
 }
 
 } // namespace mesher
