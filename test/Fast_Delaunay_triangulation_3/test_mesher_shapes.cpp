@@ -170,6 +170,19 @@ TEST(Mesher, NestedSpheresGiveTwoSubdomains)
     EXPECT_EQ(mesh.surface[t], t < outer.triangles.size() ? 1 : 2);
 }
 
+TEST(Mesher, SameInputSameMesh)
+{
+  // Sequential refinement: the same input gives the same mesh, bit for bit.
+  const Surface s = mesher_shapes::torus(1.0, 0.35, 24, 10);
+  CGAL::Fast_mesher_3::Mesher_options options;
+  options.maximum_size = 0.15;
+  const Mesh a = CGAL::Fast_mesher_3::mesh_surfaces(s.points, s.triangles, options);
+  const Mesh b = CGAL::Fast_mesher_3::mesh_surfaces(s.points, s.triangles, options);
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.tetrahedra, b.tetrahedra);
+  EXPECT_EQ(a.subdomain, b.subdomain);
+}
+
 TEST(Mesher, QualityReportAgreesWithIndependentChecks)
 {
   const Surface s = mesher_shapes::icosphere(2);
