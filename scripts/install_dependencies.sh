@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs, with apt, whatever this package needs that Debian 12 does not have yet: the compiler, CMake, CGAL and
-# its number types (GMP, MPFR, Boost), TBB for the parallel engines, GoogleTest. Does nothing if all are present.
+# its number types (GMP, MPFR, Boost), TBB for the parallel engines, GoogleTest, TetGen for the mesher's boundary
+# recovery, meshio (Python) to read the mesher's files back in a test. Does nothing if all are present.
 set -euo pipefail
 
-packages=(build-essential cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev libgtest-dev)
+packages=(build-essential cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev libgtest-dev libtet1.5-dev python3-meshio)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,0 +1,219 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Delaunay-refinement tetrahedral mesher of the paper's §4 (Algorithm 2):
+// closed triangulated surfaces in, a tetrahedral mesh of the volumes they
+// bound out, with the surface triangles as its boundary, exactly.
+//
+//   EMPTYMESH        Delaunay of the surface vertices (this package's engine)
+//   RECOVERBOUNDARY  kept as is when no input triangle is missing, else TetGen
+//                    (needs -ltet and TETLIBRARY; CMake target
+//                    Fast_Delaunay_triangulation_3::TetGen in this repository)
+//   colouring        one subdomain per volume, the outside dropped
+//   refinement       circumcentres of tetrahedra with radius > 1.4 h, filtered
+//                    at 0.7 h, inserted by batches with constrained,
+//                    star-shaped cavities
+//
+//   #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
+//   CGAL::Fast_mesher_3::Tetrahedral_mesh mesh =
+//       CGAL::Fast_mesher_3::mesh_surface_files({"part.off"}, options);
+//   CGAL::Fast_mesher_3::write_mesh("part.mesh", mesh);
+//
+// Also as CGAL's Mesh_complex_3_in_triangulation_3: mesh_surfaces_to_c3t3.
+//
+// Not yet (issue 5): batches are inserted by one thread; no user size
+// function; no mesh improvement (slivers stay); surfaces may not touch.
+
+#ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
+#define CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Boundary_recovery.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/C3t3_conversion.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Constrained_mesh.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Mesh_writers.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Quality_report.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Refinement.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Sizing.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Surface_input.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Volume_colouring.h>
+
+#include <array>
+#include <chrono>
+#include <functional>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Fast_mesher_3 {
+
+typedef Fast_Delaunay_triangulation_3_internal::mesher::Invalid_surface Invalid_surface;
+
+struct Mesher_options
+{
+  // Global maximum of h; the default size is the surface's, interpolated.
+  double maximum_size = std::numeric_limits<double>::infinity();
+  // Threads of the empty mesh (the refinement batches are sequential for now).
+  int threads = 1;
+  double radius_ratio = 1.4;
+  double min_edge_ratio = 0.7;
+  int max_refinement_passes = 200;
+  // Called after each refinement pass with (pass number, points inserted,
+  // tetrahedra in the volumes); the library itself prints nothing.
+  std::function<void(int, std::size_t, std::size_t)> progress;
+};
+
+// Seconds and counts of the phases, in the paper's Figure 12 split.
+struct Mesher_statistics
+{
+  double input_seconds = 0, empty_mesh_seconds = 0, recovery_seconds = 0, colouring_seconds = 0,
+         refinement_seconds = 0, total_seconds = 0;
+  std::size_t missing_triangles = 0; // input triangles absent from the empty mesh
+  bool used_tetgen = false;
+  std::size_t steiner_points = 0;    // added by the recovery, inside the volumes
+  int refinement_passes = 0;
+  std::size_t refinement_points = 0, filtered_points = 0, aborted_points = 0;
+};
+
+namespace mesher_detail {
+
+using namespace Fast_Delaunay_triangulation_3_internal::mesher;
+
+inline double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// `on_mesh(cm)` sees the final constrained mesh before it is extracted.
+template <class On_mesh>
+Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& options, Mesher_statistics& stats,
+                           On_mesh on_mesh)
+{
+  typedef std::chrono::steady_clock Clock;
+  Clock::time_point t0 = Clock::now();
+  Constrained_mesh cm;
+  const Recovery_report recovery = empty_mesh_and_recovery(soup, options.threads, cm);
+  stats.empty_mesh_seconds = recovery.empty_mesh_seconds;
+  stats.recovery_seconds = recovery.recovery_seconds;
+  stats.missing_triangles = recovery.missing_triangles;
+  stats.used_tetgen = recovery.used_tetgen;
+  stats.steiner_points = recovery.steiner_points;
+
+  Clock::time_point t1 = Clock::now();
+  flag_constrained_facets(soup, cm);
+  colour_volumes(cm);
+  surface_sizes(soup, options.maximum_size, cm);
+  stats.colouring_seconds = seconds_since(t1);
+
+  t1 = Clock::now();
+  Refinement_options refinement;
+  refinement.radius_ratio = options.radius_ratio;
+  refinement.min_edge_ratio = options.min_edge_ratio;
+  refinement.max_passes = options.max_refinement_passes;
+  Constrained_refinement refine(cm, refinement);
+  const std::vector<Refinement_pass> passes = refine.run([&](const Refinement_pass& pass, int k) {
+    if(options.progress) options.progress(k, pass.inserted, pass.tetrahedra);
+  });
+  stats.refinement_passes = static_cast<int>(passes.size());
+  for(const Refinement_pass& pass : passes) {
+    stats.refinement_points += pass.inserted;
+    stats.filtered_points += pass.filtered_out;
+    stats.aborted_points += pass.aborted;
+  }
+  stats.refinement_seconds = seconds_since(t1);
+  on_mesh(static_cast<const Constrained_mesh&>(cm));
+  Tetrahedral_mesh mesh = extract_mesh(cm, soup);
+  stats.total_seconds = seconds_since(t0);
+  return mesh;
+}
+
+// Reads and checks the input with `read_soup`, then meshes it.
+template <class Read_soup, class On_mesh>
+Tetrahedral_mesh read_and_mesh(Read_soup read_soup, const Mesher_options& options, Mesher_statistics* statistics,
+                               On_mesh on_mesh)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const Surface_soup soup = read_soup();
+  Mesher_statistics stats;
+  stats.input_seconds = seconds_since(t0);
+  Tetrahedral_mesh mesh = mesh_soup(soup, options, stats, [&](const Constrained_mesh& cm) { on_mesh(cm, soup); });
+  if(statistics) *statistics = stats;
+  return mesh;
+}
+
+} // namespace mesher_detail
+
+// Meshes the volumes bounded by the surfaces of the files (any format
+// CGAL::IO::read_polygon_soup reads).  Throws Invalid_surface, naming the
+// problem and the triangles, for an input that is not a set of closed,
+// oriented, manifold, non-intersecting triangulated surfaces.
+inline Tetrahedral_mesh mesh_surface_files(const std::vector<std::string>& paths,
+                                           const Mesher_options& options = Mesher_options(),
+                                           Mesher_statistics* statistics = nullptr)
+{
+  return mesher_detail::read_and_mesh([&] { return mesher_detail::read_surfaces(paths); }, options, statistics,
+                                      [](const auto&, const auto&) {});
+}
+
+// The same for triangles in memory (indices into `points`).
+inline Tetrahedral_mesh mesh_surfaces(const std::vector<std::array<double, 3>>& points,
+                                      const std::vector<std::array<std::size_t, 3>>& triangles,
+                                      const Mesher_options& options = Mesher_options(),
+                                      Mesher_statistics* statistics = nullptr)
+{
+  return mesher_detail::read_and_mesh([&] { return mesher_detail::surfaces_from_triangles(points, triangles); },
+                                      options, statistics, [](const auto&, const auto&) {});
+}
+
+// The same, and the mesh also as CGAL's Mesh_complex_3_in_triangulation_3
+// (convert_to_cgal.h's approach: cells created directly, the convex hull
+// included; tetrahedra of subdomain s in the complex with index s, input
+// triangles as surface facets with their surface number, or the pair of
+// subdomains when the patch index type is a pair).  The mesh is not
+// Delaunay: use a triangulation type that does not require it, such as
+// Tetrahedral_remeshing::Remeshing_triangulation_3.
+template <class C3t3>
+Tetrahedral_mesh mesh_surface_files_to_c3t3(const std::vector<std::string>& paths, C3t3& c3t3,
+                                            const Mesher_options& options = Mesher_options(),
+                                            Mesher_statistics* statistics = nullptr)
+{
+  return mesher_detail::read_and_mesh([&] { return mesher_detail::read_surfaces(paths); }, options, statistics,
+                                      [&](const auto& cm, const auto& soup) {
+                                        mesher_detail::constrained_mesh_to_c3t3(cm, soup, c3t3);
+                                      });
+}
+
+template <class C3t3>
+Tetrahedral_mesh mesh_surfaces_to_c3t3(const std::vector<std::array<double, 3>>& points,
+                                       const std::vector<std::array<std::size_t, 3>>& triangles, C3t3& c3t3,
+                                       const Mesher_options& options = Mesher_options(),
+                                       Mesher_statistics* statistics = nullptr)
+{
+  return mesher_detail::read_and_mesh([&] { return mesher_detail::surfaces_from_triangles(points, triangles); },
+                                      options, statistics, [&](const auto& cm, const auto& soup) {
+                                        mesher_detail::constrained_mesh_to_c3t3(cm, soup, c3t3);
+                                      });
+}
+
+// Writes .mesh (Medit), .vtu (VTK, ASCII) or .msh (Gmsh 4.1, ASCII), by extension.
+inline void write_mesh(const std::string& path, const Tetrahedral_mesh& mesh)
+{
+  Fast_Delaunay_triangulation_3_internal::mesher::write_mesh_file(path, mesh);
+}
+
+inline Quality_report quality_report(const Tetrahedral_mesh& mesh)
+{
+  return Fast_Delaunay_triangulation_3_internal::mesher::quality_report(mesh);
+}
+
+inline void print_quality_report(std::ostream& out, const Quality_report& report)
+{
+  Fast_Delaunay_triangulation_3_internal::mesher::print_quality_report(out, report);
+}
+
+} // namespace Fast_mesher_3
+} // namespace CGAL
+
+#endif // CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H

@@ -1,0 +1,293 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The input of the mesher (paper §4: "a set of triangles t that defines the
+// boundary of a closed volume"): one or more triangulated surfaces read as
+// polygon soups, their equal vertices merged, and checked before any
+// tetrahedron is built.  A surface that is not the closed, oriented,
+// non-self-intersecting boundary of a volume is refused with an
+// Invalid_surface exception that names the problem and the triangles.
+//
+// Triangle numbers in the messages are positions in the merged soup: the
+// triangles of the first file first, in file order, then the second file's.
+
+#ifndef CGAL_FDT3_INTERNAL_MESHER_SURFACE_INPUT_H
+#define CGAL_FDT3_INTERNAL_MESHER_SURFACE_INPUT_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+namespace mesher {
+
+// Thrown for an input the mesher cannot take; what() names the problem.
+class Invalid_surface : public std::invalid_argument
+{
+public:
+  explicit Invalid_surface(const std::string& what) : std::invalid_argument(what) {}
+};
+
+// Triangles with merged vertices.  surface[t] is the closed surface (the
+// connected component, numbered from 1) that triangle t belongs to.
+struct Surface_soup
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<int> surface;
+  int number_of_surfaces = 0;
+};
+
+namespace surface_detail {
+
+// Lists at most a few indices: a message stays readable on a broken input
+// with thousands of bad triangles.
+template <class Range>
+std::string list_of(const Range& indices, std::size_t at_most = 10)
+{
+  std::ostringstream s;
+  std::size_t k = 0;
+  for(const auto& i : indices) {
+    if(k == at_most) {
+      s << ", ... (" << indices.size() << " in all)";
+      break;
+    }
+    s << (k == 0 ? "" : ", ") << i;
+    ++k;
+  }
+  return s.str();
+}
+
+inline void fail(const std::string& what) { throw Invalid_surface("Tetrahedral_mesher: " + what); }
+
+typedef std::pair<std::uint32_t, std::uint32_t> Edge;
+
+// Every edge of the soup, undirected, with the triangles using it and the
+// direction each uses it in (+1 from the smaller id to the larger).
+struct Edge_use
+{
+  std::uint32_t triangle;
+  int direction;
+};
+
+inline std::map<Edge, std::vector<Edge_use>> edge_uses(const Surface_soup& soup)
+{
+  std::map<Edge, std::vector<Edge_use>> uses;
+  for(std::uint32_t t = 0; t < soup.triangles.size(); ++t)
+    for(int i = 0; i < 3; ++i) {
+      const std::uint32_t a = soup.triangles[t][i], b = soup.triangles[t][(i + 1) % 3];
+      uses[{std::min(a, b), std::max(a, b)}].push_back({t, a < b ? 1 : -1});
+    }
+  return uses;
+}
+
+} // namespace surface_detail
+
+// Appends the polygon soup of one file (any format CGAL::IO::read_polygon_soup
+// reads: OFF, STL, OBJ, PLY, ...) to `points` / `polygons`.
+inline void read_soup_file(const std::string& path, std::vector<std::array<double, 3>>& points,
+                           std::vector<std::vector<std::size_t>>& polygons)
+{
+  typedef Exact_predicates_inexact_constructions_kernel K;
+  std::vector<K::Point_3> file_points;
+  std::vector<std::vector<std::size_t>> file_polygons;
+  std::ifstream probe(path, std::ios::binary);
+  if(!probe) surface_detail::fail("cannot open '" + path + "'");
+  if(probe.peek() == std::ifstream::traits_type::eof()) surface_detail::fail("'" + path + "' is an empty file");
+  if(!IO::read_polygon_soup(path, file_points, file_polygons, parameters::verbose(false)))
+    surface_detail::fail("cannot read '" + path + "' as a polygon soup (OFF, STL, OBJ, PLY)");
+  const std::size_t offset = points.size();
+  for(const K::Point_3& p : file_points) points.push_back({p.x(), p.y(), p.z()});
+  for(std::vector<std::size_t>& polygon : file_polygons) {
+    for(std::size_t& v : polygon) v += offset;
+    polygons.push_back(std::move(polygon));
+  }
+}
+
+// Merges equal points and keeps triangles only (anything else is refused).
+inline Surface_soup merge_soup(const std::vector<std::array<double, 3>>& points,
+                               const std::vector<std::vector<std::size_t>>& polygons)
+{
+  using surface_detail::fail;
+  if(polygons.empty()) fail("the input has no triangles (empty file?)");
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int a = 0; a < 3; ++a)
+      if(!std::isfinite(points[i][a])) {
+        std::ostringstream s;
+        s << "point #" << i << " has a " << (std::isnan(points[i][a]) ? "NaN" : "infinite") << " coordinate";
+        fail(s.str());
+      }
+  Surface_soup soup;
+  std::map<std::array<double, 3>, std::uint32_t> id_of_point;
+  std::vector<std::uint32_t> merged(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    // -0.0 and 0.0 are the same point.
+    std::array<double, 3> key = points[i];
+    for(double& x : key) x = x + 0.0;
+    auto inserted = id_of_point.emplace(key, static_cast<std::uint32_t>(soup.points.size()));
+    if(inserted.second) soup.points.push_back(key);
+    merged[i] = inserted.first->second;
+  }
+  for(std::size_t t = 0; t < polygons.size(); ++t) {
+    if(polygons[t].size() != 3) {
+      std::ostringstream s;
+      s << "polygon #" << t << " has " << polygons[t].size() << " vertices; only triangles are meshed";
+      fail(s.str());
+    }
+    std::array<std::uint32_t, 3> tri;
+    for(int i = 0; i < 3; ++i) {
+      if(polygons[t][i] >= points.size()) {
+        std::ostringstream s;
+        s << "triangle #" << t << " refers to point #" << polygons[t][i] << ", past the " << points.size()
+          << " points";
+        fail(s.str());
+      }
+      tri[i] = merged[polygons[t][i]];
+    }
+    soup.triangles.push_back(tri);
+  }
+  return soup;
+}
+
+// Repeated vertices (after merging) and zero area (collinear vertices, exact).
+inline void check_degenerate_triangles(const Surface_soup& soup)
+{
+  std::vector<std::size_t> bad;
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    const auto& v = soup.triangles[t];
+    if(v[0] == v[1] || v[1] == v[2] || v[2] == v[0] ||
+       collinear(soup.points[v[0]].data(), soup.points[v[1]].data(), soup.points[v[2]].data()))
+      bad.push_back(t);
+  }
+  if(!bad.empty())
+    surface_detail::fail("degenerate triangles (repeated vertex or zero area): #" + surface_detail::list_of(bad));
+}
+
+// Closed, manifold at edges, consistently oriented, no triangle twice: every
+// edge is used by exactly two triangles, in opposite directions.
+inline void check_closed_oriented_manifold(const Surface_soup& soup)
+{
+  using namespace surface_detail;
+  std::vector<std::size_t> open, non_manifold, flipped;
+  for(const auto& entry : edge_uses(soup)) {
+    const std::vector<Edge_use>& u = entry.second;
+    if(u.size() == 1) open.push_back(u[0].triangle);
+    else if(u.size() > 2)
+      for(const Edge_use& e : u) non_manifold.push_back(e.triangle);
+    else if(u[0].direction == u[1].direction) {
+      flipped.push_back(u[0].triangle);
+      flipped.push_back(u[1].triangle);
+    }
+  }
+  for(std::vector<std::size_t>* list : {&open, &non_manifold, &flipped}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  if(!open.empty()) fail("the surface is open: triangles with a boundary edge #" + list_of(open));
+  if(!non_manifold.empty())
+    fail("non-manifold edges (more than two triangles): triangles #" + list_of(non_manifold));
+  if(!flipped.empty())
+    fail("inconsistent orientation: neighbouring triangles with the same edge direction #" + list_of(flipped));
+}
+
+// Numbers the closed surfaces: connected components through shared edges.
+inline void number_surfaces(Surface_soup& soup)
+{
+  const std::size_t n = soup.triangles.size();
+  std::vector<std::uint32_t> parent(n);
+  for(std::uint32_t t = 0; t < n; ++t) parent[t] = t;
+  auto root = [&](std::uint32_t t) {
+    while(parent[t] != t) t = parent[t] = parent[parent[t]];
+    return t;
+  };
+  for(const auto& entry : surface_detail::edge_uses(soup))
+    for(const auto& use : entry.second) parent[root(use.triangle)] = root(entry.second[0].triangle);
+  std::vector<int> number(n, 0);
+  soup.surface.assign(n, 0);
+  soup.number_of_surfaces = 0;
+  for(std::uint32_t t = 0; t < n; ++t) {
+    int& s = number[root(t)];
+    if(s == 0) s = ++soup.number_of_surfaces;
+    soup.surface[t] = s;
+  }
+}
+
+// Self-intersections with CGAL's exact test on the soup as a Surface_mesh
+// (faces keep the soup's order).  Two surfaces may not even touch at a
+// vertex in this milestone: such a vertex is reported as non-manifold.
+inline void check_self_intersections(const Surface_soup& soup)
+{
+  typedef Exact_predicates_inexact_constructions_kernel K;
+  typedef Surface_mesh<K::Point_3> Mesh;
+  std::vector<K::Point_3> points;
+  for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
+  std::vector<std::vector<std::size_t>> faces;
+  for(const auto& t : soup.triangles) faces.push_back({t[0], t[1], t[2]});
+  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(faces))
+    surface_detail::fail("non-manifold vertices: two surfaces or two sheets of one surface touch at a vertex");
+  Mesh mesh;
+  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, faces, mesh);
+  CGAL_assertion(mesh.number_of_faces() == soup.triangles.size());
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(pairs));
+  if(pairs.empty()) return;
+  std::vector<std::string> described;
+  for(const auto& p : pairs) {
+    std::ostringstream s;
+    s << std::size_t(p.first) << " x " << std::size_t(p.second);
+    described.push_back(s.str());
+  }
+  surface_detail::fail("self-intersecting surface: intersecting triangle pairs #" +
+                       surface_detail::list_of(described));
+}
+
+// The checks, from the cheapest to the costliest, then the surface numbers.
+inline Surface_soup checked(Surface_soup soup)
+{
+  check_degenerate_triangles(soup);
+  check_closed_oriented_manifold(soup);
+  check_self_intersections(soup);
+  number_surfaces(soup);
+  return soup;
+}
+
+inline Surface_soup read_surfaces(const std::vector<std::string>& paths)
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  for(const std::string& path : paths) read_soup_file(path, points, polygons);
+  return checked(merge_soup(points, polygons));
+}
+
+// The same for triangles given in memory.
+inline Surface_soup surfaces_from_triangles(const std::vector<std::array<double, 3>>& points,
+                                            const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  std::vector<std::vector<std::size_t>> polygons;
+  for(const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
+  return checked(merge_soup(points, polygons));
+}
+
+} // namespace mesher
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_MESHER_SURFACE_INPUT_H

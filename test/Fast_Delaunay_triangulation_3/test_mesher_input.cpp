@@ -1,0 +1,227 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The mesher's input checks: every bad surface is refused with an
+// Invalid_surface whose message names the problem (and the triangles), and
+// good files in each format are read.
+
+#include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
+
+#include <gtest/gtest.h>
+
+#include "mesher_shapes.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+namespace {
+
+using mesher_shapes::Surface;
+namespace fm = CGAL::Fast_mesher_3;
+
+std::string temporary(const std::string& name)
+{
+  return (std::filesystem::temp_directory_path() / ("fdt3_mesher_input_" + name)).string();
+}
+
+// Runs `call`, which must throw Invalid_surface; returns its message.
+template <class Call>
+std::string refusal(Call call)
+{
+  try {
+    call();
+  } catch(const fm::Invalid_surface& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no Invalid_surface thrown";
+  return std::string();
+}
+
+std::string refusal_of(const Surface& s)
+{
+  return refusal([&] { fm::mesh_surfaces(s.points, s.triangles); });
+}
+
+std::string refusal_of_file(const std::string& path)
+{
+  return refusal([&] { fm::mesh_surface_files({path}); });
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(MesherInput, EmptyFile)
+{
+  const std::string path = temporary("empty.off");
+  { std::ofstream out(path); }
+  const std::string message = refusal_of_file(path);
+  EXPECT_TRUE(contains(message, "empty")) << message;
+  std::remove(path.c_str());
+}
+
+TEST(MesherInput, FileWithoutTriangles)
+{
+  const std::string path = temporary("points_only.off");
+  {
+    std::ofstream out(path);
+    out << "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n";
+  }
+  const std::string message = refusal_of_file(path);
+  EXPECT_TRUE(contains(message, "no triangles")) << message;
+  std::remove(path.c_str());
+}
+
+TEST(MesherInput, MissingFile)
+{
+  const std::string message = refusal_of_file(temporary("does_not_exist.off"));
+  EXPECT_TRUE(contains(message, "cannot open")) << message;
+}
+
+TEST(MesherInput, NaNCoordinate)
+{
+  Surface s = mesher_shapes::cube();
+  s.points[5][1] = std::numeric_limits<double>::quiet_NaN();
+  const std::string message = refusal_of(s);
+  EXPECT_TRUE(contains(message, "NaN")) << message;
+  EXPECT_TRUE(contains(message, "#5")) << message;
+}
+
+TEST(MesherInput, NaNCoordinateInFile)
+{
+  const std::string path = temporary("nan.off");
+  Surface s = mesher_shapes::cube();
+  mesher_shapes::write_off(path, s);
+  // Replace the second coordinate of point 3 by "nan" in the text.
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  std::ofstream out(path);
+  out << "OFF\n8 12 0\n";
+  for(std::size_t i = 0; i < s.points.size(); ++i) {
+    if(i == 3) out << s.points[i][0] << " nan " << s.points[i][2] << "\n";
+    else out << s.points[i][0] << ' ' << s.points[i][1] << ' ' << s.points[i][2] << "\n";
+  }
+  for(const auto& t : s.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << "\n";
+  out.close();
+  // Either the reader rejects the token or the check names the coordinate:
+  // never a mesh.
+  const std::string message = refusal_of_file(path);
+  EXPECT_TRUE(contains(message, "NaN") || contains(message, "cannot read")) << message;
+  std::remove(path.c_str());
+}
+
+TEST(MesherInput, InfiniteCoordinate)
+{
+  Surface s = mesher_shapes::cube();
+  s.points[2][0] = std::numeric_limits<double>::infinity();
+  const std::string message = refusal_of(s);
+  EXPECT_TRUE(contains(message, "infinite")) << message;
+}
+
+TEST(MesherInput, OpenSurface)
+{
+  Surface s = mesher_shapes::cube();
+  s.triangles.erase(s.triangles.begin() + 4); // triangle 4 of the cube
+  const std::string message = refusal_of(s);
+  EXPECT_TRUE(contains(message, "open")) << message;
+  // The triangles around the hole are named: triangle 5 (the other half of
+  // the same face) has a boundary edge.
+  EXPECT_TRUE(contains(message, "4")) << message;
+}
+
+TEST(MesherInput, NonManifoldEdge)
+{
+  // Two cubes sharing the edge x = y = 1: four triangles at that edge.
+  const Surface s = mesher_shapes::combine(mesher_shapes::cube(0, 1), mesher_shapes::cube(1, 2));
+  const std::string message = refusal_of(s);
+  EXPECT_TRUE(contains(message, "non-manifold")) << message;
+}
+
+TEST(MesherInput, InconsistentOrientation)
+{
+  Surface s = mesher_shapes::icosphere(1);
+  std::swap(s.triangles[7][0], s.triangles[7][1]);
+  const std::string message = refusal_of(s);
+  EXPECT_TRUE(contains(message, "orientation")) << message;
+  EXPECT_TRUE(contains(message, "7")) << message;
+}
+
+TEST(MesherInput, DegenerateTriangle)
+{
+  // A cube with one face split at its centre into 4 triangles, plus a
+  // zero-area sliver triangle: (a, centre, b) collinear.
+  Surface s = mesher_shapes::cube();
+  s.points.push_back({0.5, 0.5, 0.0}); // centre of the bottom face
+  s.points.push_back({0.5, 0.5, 0.0}); // the same point again: merged
+  s.triangles[0] = {0, 2, 8};
+  s.triangles[1] = {2, 3, 9};          // refers to the duplicate: merged, fine
+  s.triangles.push_back({3, 1, 8});
+  s.triangles.push_back({1, 0, 8});
+  ASSERT_NO_THROW(fm::mesh_surfaces(s.points, s.triangles));
+  Surface d = s;
+  d.triangles.push_back({0, 8, 8});
+  const std::string message = refusal_of(d);
+  EXPECT_TRUE(contains(message, "degenerate")) << message;
+  EXPECT_TRUE(contains(message, "#14")) << message;
+}
+
+TEST(MesherInput, SelfIntersection)
+{
+  // Two overlapping spheres: closed, oriented, manifold, but crossing.
+  const Surface s = mesher_shapes::combine(mesher_shapes::icosphere(1, 1.0),
+                                           mesher_shapes::icosphere(1, 1.0, {0.7, 0.1, 0.05}));
+  const std::string message = refusal_of(s);
+  EXPECT_TRUE(contains(message, "self-intersecting")) << message;
+  EXPECT_TRUE(contains(message, " x ")) << message; // names pairs of triangles
+}
+
+TEST(MesherInput, PolygonsOtherThanTrianglesAreRefused)
+{
+  const std::string path = temporary("quad.off");
+  {
+    std::ofstream out(path);
+    out << "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+  }
+  const std::string message = refusal_of_file(path);
+  EXPECT_TRUE(contains(message, "only triangles")) << message;
+  std::remove(path.c_str());
+}
+
+TEST(MesherInput, ReadsOffStlObjAndSeveralFiles)
+{
+  const Surface outer = mesher_shapes::icosphere(1, 1.0);
+  const Surface inner = mesher_shapes::icosphere(0, 0.4);
+  const std::string off = temporary("outer.off"), obj = temporary("inner.obj"), stl = temporary("inner.stl");
+  mesher_shapes::write_off(off, outer);
+  {
+    std::ofstream out(obj);
+    out.precision(17);
+    for(const auto& p : inner.points) out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << "\n";
+    for(const auto& t : inner.triangles) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << "\n";
+  }
+  {
+    std::ofstream out(stl);
+    out.precision(17);
+    out << "solid inner\n";
+    for(const auto& t : inner.triangles) {
+      out << "facet normal 0 0 0\nouter loop\n";
+      for(int i = 0; i < 3; ++i)
+        out << "vertex " << inner.points[t[i]][0] << ' ' << inner.points[t[i]][1] << ' ' << inner.points[t[i]][2]
+            << "\n";
+      out << "endloop\nendfacet\n";
+    }
+    out << "endsolid inner\n";
+  }
+  for(const std::string& second : {obj, stl}) {
+    const fm::Tetrahedral_mesh mesh = fm::mesh_surface_files({off, second});
+    EXPECT_EQ(mesh.number_of_surfaces, 2) << second;
+    EXPECT_EQ(mesh.number_of_subdomains, 2) << second;
+    EXPECT_EQ(mesh.triangles.size(), outer.triangles.size() + inner.triangles.size()) << second;
+  }
+  for(const std::string& path : {off, obj, stl}) std::remove(path.c_str());
+}
+
+} // namespace
