@@ -239,11 +239,11 @@ inline int orientation(const double* p, const double* q, const double* r, const 
 }
 
 // Exact sign of side_of_oriented_sphere(p, q, r, s, t): positive when t is
-// strictly inside the sphere of the positively oriented p, q, r, s.
-inline int side_of_oriented_sphere(const double* p, const double* q, const double* r,
-                                   const double* s, const double* t)
+// strictly inside the sphere of the positively oriented p, q, r, s.  `det`
+// is in_sphere_determinant(p, q, r, s, t), already computed by the caller.
+inline int side_of_oriented_sphere_from(double det, const double* p, const double* q, const double* r,
+                                        const double* s, const double* t)
 {
-  const double det = in_sphere_determinant(p, q, r, s, t);
   const double* const others[4] = {p, q, r, s};
   double m[3];
   max_differences(t, others, m);
@@ -259,6 +259,12 @@ inline int side_of_oriented_sphere(const double* p, const double* q, const doubl
     for(int a = 0; a < 3; ++a) span.add_difference(x[a], t[a]);
   if(span.at_most(9)) return (det < 0) - (det > 0);
   return predicates_detail::side_of_oriented_sphere_exact(p, q, r, s, t);
+}
+
+inline int side_of_oriented_sphere(const double* p, const double* q, const double* r,
+                                   const double* s, const double* t)
+{
+  return side_of_oriented_sphere_from(in_sphere_determinant(p, q, r, s, t), p, q, r, s, t);
 }
 
 // A first, static stage in front of the per-call bounds above: the same error
@@ -308,6 +314,9 @@ inline int side_of_oriented_sphere(const Static_filter& filter, const double* p,
   return side_of_oriented_sphere(p, q, r, s, t);
 }
 
+inline int perturbed_tie_break(const double* p0, const double* p1, const double* p2, const double* p3,
+                               const double* p);
+
 // CGAL's Delaunay_triangulation_3::side_of_oriented_sphere(..., perturb = true):
 // never zero for distinct points.  p0..p3 positively oriented.
 inline int perturbed_side_of_oriented_sphere(const double* p0, const double* p1, const double* p2,
@@ -316,7 +325,14 @@ inline int perturbed_side_of_oriented_sphere(const double* p0, const double* p1,
 {
   const int side = side_of_oriented_sphere(filter, p0, p1, p2, p3, p);
   if(side != 0) return side;
+  return perturbed_tie_break(p0, p1, p2, p3, p);
+}
 
+// The sign CGAL's perturbation gives to an exact cospherical tie of p with
+// the positively oriented p0..p3.
+inline int perturbed_tie_break(const double* p0, const double* p1, const double* p2, const double* p3,
+                               const double* p)
+{
   // Only the two lexicographically largest points matter: on integer grids
   // most tests are exact ties, so this path is hot there.
   const double* const points[5] = {p0, p1, p2, p3, p};
@@ -374,9 +390,11 @@ inline int perturbed_coplanar_side_of_bounded_circle(const double* p0, const dou
 // point, and keeping the rare later stages in a separate function spares
 // this path their register saves and lets it be inlined into the search.
 __attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_static_stage(
-    const double* a, const double* b, const double* c, const double* d, const double* p)
+    double det, const double* a, const double* b, const double* c, const double* d, const double* p)
 {
-  return perturbed_side_of_oriented_sphere(a, b, c, d, p) > 0;
+  const int side = side_of_oriented_sphere_from(det, a, b, c, d, p);
+  if(side != 0) return side > 0;
+  return perturbed_tie_break(a, b, c, d, p) > 0;
 }
 
 inline bool finite_cell_in_conflict(const double* a, const double* b, const double* c,
@@ -387,7 +405,7 @@ inline bool finite_cell_in_conflict(const double* a, const double* b, const doub
   const double det = in_sphere_determinant(a, b, c, d, p);
   if(det < -filter.in_sphere) return true;
   if(det > filter.in_sphere) return false;
-  return finite_cell_in_conflict_beyond_static_stage(a, b, c, d, p);
+  return finite_cell_in_conflict_beyond_static_stage(det, a, b, c, d, p);
 }
 
 // Conflict test of a ghost tetrahedron (a, b, c, infinite): its "sphere" is
