@@ -1463,13 +1463,15 @@ private:
     return out;
   }
 
-  std::ptrdiff_t insert_coordinates(const std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input)
+  // Consumes `xyz`: the core frees it once the vertex records are written,
+  // so the copy of the input does not stay resident while the mesh grows.
+  std::ptrdiff_t insert_coordinates(std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input)
   {
     const std::size_t n = xyz.size() / 3;
     Core::check_finite(xyz.data(), n);
     incident_cells_.clear();
     core_.partitions = partitions_for_insertion();
-    const std::size_t added = core_.insert(xyz.data(), n, vertex_of_input);
+    const std::size_t added = core_.insert(xyz.data(), n, vertex_of_input, &xyz);
     vertices_added();
     return static_cast<std::ptrdiff_t>(added);
   }

@@ -121,8 +121,10 @@ public:
   // Inserts n points given as x, y, z triples (already checked finite).
   // vertex_of_input, if not null, receives for every input point the id of
   // its vertex (an older vertex for a duplicate).  Returns the number of new
-  // vertices.
-  std::size_t insert(const double* xyz, std::size_t n, std::vector<Vertex_id>* vertex_of_input)
+  // vertices.  If `consumed` is the vector holding xyz, it is freed as soon
+  // as the vertex records are written (before the mesh grows).
+  std::size_t insert(const double* xyz, std::size_t n, std::vector<Vertex_id>* vertex_of_input,
+                     std::vector<double>* consumed = nullptr)
   {
     last_report = Insertion_report();
     last_report.points = n;
@@ -131,7 +133,7 @@ public:
       return 0;
     }
     if(number_of_vertices() + n > max_vertices)
-      throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^32 - 2 vertices");
+      throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^31 - 2 vertices");
 
     const Clock::time_point t0 = Clock::now();
     const std::size_t first_new = number_of_vertices();
@@ -142,6 +144,11 @@ public:
       const double* p = xyz + 3 * std::size_t(order.order[i]);
       r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
       r.scratch = 0;
+    }
+    if(consumed != nullptr) {
+      CGAL_assertion(consumed->data() == xyz);
+      std::vector<double>().swap(*consumed);
+      xyz = nullptr;
     }
     extend_bounding_box(first_new);
     const Clock::time_point t1 = Clock::now();
@@ -240,7 +247,7 @@ private:
   Vertex_id append_vertex(const double* p)
   {
     if(number_of_vertices() + 1 > max_vertices)
-      throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^32 - 2 vertices");
+      throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^31 - 2 vertices");
     const Vertex_id v = static_cast<Vertex_id>(number_of_vertices());
     Vertex_record r;
     r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
