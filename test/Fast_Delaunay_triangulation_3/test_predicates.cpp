@@ -11,6 +11,7 @@
 //    their comments derive, and the magnitude limits keep those bounds valid.
 #include "triangulation_checks.h"
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 
 #include <algorithm>
@@ -205,6 +206,58 @@ TEST(Side_of_oriented_sphere, SignOfCgalsExactPredicate)
           << "static filter, case " << i;
     }
   }
+}
+
+// The kernel's conflict test reads the four vertices as 32-byte records (with
+// AVX2, a vectorised determinant): with any scratch word beside the
+// coordinates (zero, small integers read as denormals, all ones read as a
+// NaN) it must decide as the scalar test on random, nearly cospherical and
+// exactly cospherical points, at every scale, with and without the static stage.
+TEST(Side_of_oriented_sphere, RecordConflictTestAsScalarOne)
+{
+  Generator g(31);
+  const std::vector<Xyz> sphere = integer_sphere_points(101);
+  const std::uint64_t scratch_words[] = {0, 7, 31, ~std::uint64_t(0)};
+  std::size_t conflicts = 0, tested = 0;
+  for(const Frame& f : frames()) {
+    SCOPED_TRACE(describe(f));
+    for(int i = 0; i < 900; ++i) {
+      std::array<Coordinates, 5> p;
+      if(i % 3 == 0) {
+        for(Coordinates& q : p) q = g.point(f.scale, f.offset);
+      } else if(i % 3 == 1) {
+        const Coordinates centre = g.point(f.scale, f.offset);
+        const double radius = f.scale * g.uniform(0.1, 1);
+        for(Coordinates& q : p) q = g.near_sphere(centre, radius);
+      } else {
+        for(Coordinates& q : p) {
+          const Xyz& s = sphere[static_cast<std::size_t>(g.integer(0, int(sphere.size()) - 1))];
+          q = {f.scale * s.x + f.offset, f.scale * s.y, f.scale * s.z};
+        }
+      }
+      // Positive orientation, as in the triangulation; skip flat tetrahedra.
+      const int o = cgal_orientation(p[0], p[1], p[2], p[3]);
+      if(o == 0) continue;
+      if(o < 0) std::swap(p[0], p[1]);
+      P::Vertex_record records[4];
+      for(int k = 0; k < 4; ++k) {
+        std::copy(p[k].begin(), p[k].end(), records[k].xyz);
+        records[k].scratch = scratch_words[(i + k) % 4];
+      }
+      for(const P::Static_filter& filter : {P::Static_filter(), tight_static_filter(p)}) {
+        const bool expected = P::finite_cell_in_conflict(p[0].data(), p[1].data(), p[2].data(), p[3].data(),
+                                                         p[4].data(), filter);
+        ASSERT_EQ(P::finite_record_in_conflict(records[0].xyz, records[1].xyz, records[2].xyz, records[3].xyz,
+                                               p[4].data(), filter),
+                  expected)
+            << "case " << i;
+        conflicts += expected ? 1 : 0;
+        ++tested;
+      }
+    }
+  }
+  EXPECT_GT(conflicts, tested / 10);
+  EXPECT_LT(conflicts, tested - tested / 10);
 }
 
 TEST(Side_of_oriented_sphere, IntegerSpherePointsOffByAnUlp)

@@ -268,8 +268,8 @@ public:
     }
     if(tv[3] == ghost_vertex)
       return ghost_cell_in_conflict(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), p, filter_);
-    return finite_cell_in_conflict(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]),
-                                   m_.point(tv[3]), p, filter_);
+    return finite_record_in_conflict(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]),
+                                     m_.point(tv[3]), p, filter_);
   }
 
   // CAVITY alone, as a query (CGAL's find_conflicts): the tetrahedra in
