@@ -163,6 +163,53 @@ TEST(Orientation, SignOfCgalsExactPredicate)
   EXPECT_GT(zeros, 100u) << "too few exactly coplanar cases (of " << tested << ") to exercise the exact stage";
 }
 
+#ifdef CGAL_FDT3_SIMD_RECORDS
+// The walk's four facet orientations of a tetrahedron of vertex records
+// against a point, certified by the static filter: every certified sign is
+// CGAL's exact one (random, nearly coplanar, exactly coplanar grid points).
+TEST(Orientation, FacetOrientationsOfRecordsCertifyExactSigns)
+{
+  Generator g(32);
+  std::size_t certified = 0, tested = 0;
+  for(const Frame& f : frames()) {
+    SCOPED_TRACE(describe(f));
+    for(int i = 0; i < 1500; ++i) {
+      std::array<Coordinates, 5> p;
+      for(int k = 0; k < 3; ++k) p[k] = g.point(f.scale, f.offset);
+      if(i % 3 == 2)
+        for(Coordinates& q : p) q = {f.scale * g.integer(0, 2), f.scale * g.integer(0, 2), f.scale * g.integer(0, 2)};
+      else {
+        p[3] = g.point(f.scale, f.offset);
+        p[4] = (i % 3 == 0) ? g.point(f.scale, f.offset) : g.near_plane(p[0], p[1], p[2]);
+      }
+      P::Vertex_record records[4];
+      for(int k = 0; k < 4; ++k) {
+        std::copy(p[k].begin(), p[k].end(), records[k].xyz);
+        records[k].scratch = std::uint64_t(i + k); // denormals in the fourth lane
+      }
+      const P::Static_filter filter = tight_static_filter(p);
+      double volumes[4];
+      _mm256_storeu_pd(volumes, P::facet_orientations_of_records(records[0].xyz, records[1].xyz, records[2].xyz,
+                                                                 records[3].xyz, p[4].data()));
+      for(int facet = 0; facet < 4; ++facet) {
+        std::array<Coordinates, 4> q = {p[0], p[1], p[2], p[3]};
+        q[facet] = p[4];
+        const int expected = cgal_orientation(q[0], q[1], q[2], q[3]);
+        ++tested;
+        if(volumes[facet] > filter.orientation) {
+          ASSERT_EQ(expected, 1) << "case " << i << " facet " << facet;
+          ++certified;
+        } else if(volumes[facet] < -filter.orientation) {
+          ASSERT_EQ(expected, -1) << "case " << i << " facet " << facet;
+          ++certified;
+        }
+      }
+    }
+  }
+  EXPECT_GT(certified, tested / 3);
+}
+#endif
+
 TEST(Orientation, GridPoints)
 {
   // Small integer coordinates: zero determinants everywhere, also scaled.

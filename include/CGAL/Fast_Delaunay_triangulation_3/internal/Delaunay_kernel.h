@@ -233,11 +233,26 @@ public:
       const Vertex_id* tv = m_.vertex_ids(t);
       const double* w[4] = {m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), m_.point(tv[3])};
       const int first = static_cast<int>(s_.next_random() & 3);
+#ifdef CGAL_FDT3_SIMD_RECORDS
+      // The four facet orientations at once; the bits say which are
+      // certified negative (p strictly beyond) or positive by the static filter.
+      const __m256d volumes = facet_orientations_of_records(w[0], w[1], w[2], w[3], p);
+      const __m256d bound = _mm256_set1_pd(filter_.orientation);
+      const int beyond = _mm256_movemask_pd(_mm256_cmp_pd(volumes, -bound, _CMP_LT_OQ));
+      const int before = _mm256_movemask_pd(_mm256_cmp_pd(volumes, bound, _CMP_GT_OQ));
+#endif
       Tet_id next = Tet_id(-1);
       for(int k = 0; k < 4; ++k) {
         const int f = (first + k) & 3;
         const Tet_id u = m_.neighbor(t, f);
         if(u == previous) continue;
+#ifdef CGAL_FDT3_SIMD_RECORDS
+        if(beyond & (1 << f)) {
+          next = u;
+          break;
+        }
+        if(before & (1 << f)) continue;
+#endif
         const double* q[4] = {w[0], w[1], w[2], w[3]};
         q[f] = p;
         if(orientation(filter_, q[0], q[1], q[2], q[3]) < 0) {

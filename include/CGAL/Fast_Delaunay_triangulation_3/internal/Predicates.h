@@ -164,43 +164,79 @@ inline double in_sphere_determinant(const double* p, const double* q, const doub
 }
 
 #if defined(__AVX2__) && defined(__FMA__)
-#define CGAL_FDT3_SIMD_IN_SPHERE 1
-// in_sphere_determinant for four points that are 32-byte vertex records
-// (x, y, z, scratch word), with the 4x4 matrix held in AVX registers: the
-// scalar form spends most of its ~90 instructions on loads and on the same
-// products repeated per column, and the cavity search evaluates it ~45 times
-// per inserted point.  Same minors, same lifts, same 4-term final sum as
-// in_sphere_determinant (only the association of that sum and the FMA
-// contractions differ), so the error bounds of the filters hold unchanged.
-// The scratch lanes are moved out by the transpose before any arithmetic:
-// read as doubles they are denormals, which would cost microcode assists.
-inline double in_sphere_determinant_of_records(const double* a, const double* b, const double* c,
-                                               const double* d, const double* t)
+#define CGAL_FDT3_SIMD_RECORDS 1
+// Predicates on four points that are 32-byte vertex records (x, y, z,
+// scratch word), with the 4x4 matrix held in AVX registers: lane i of a
+// register is point i.  The scalar forms spend most of their instructions on
+// loads and on products that several cofactors share; the cavity search
+// evaluates the in-sphere determinant ~45 times per inserted point and the
+// walk the four facet orientations ~5 times.  The vectorised forms use the
+// same minors and the same sums as the scalar ones (only the association of
+// the final sum and the FMA contractions differ), so the error bounds of the
+// filters hold unchanged.  The scratch lanes leave in the transpose, before
+// any arithmetic: read as doubles they are denormals, which would cost
+// microcode assists.
+namespace simd_records {
+
+struct Columns
+{
+  __m256d x, y, z; // coordinates of the four points relative to a fifth one
+};
+
+inline Columns columns_relative_to(const double* a, const double* b, const double* c, const double* d,
+                                   const double* t)
 {
   const __m256d ra = _mm256_loadu_pd(a), rb = _mm256_loadu_pd(b);
   const __m256d rc = _mm256_loadu_pd(c), rd = _mm256_loadu_pd(d);
   const __m256d ab_xz = _mm256_unpacklo_pd(ra, rb), ab_yw = _mm256_unpackhi_pd(ra, rb);
   const __m256d cd_xz = _mm256_unpacklo_pd(rc, rd), cd_yw = _mm256_unpackhi_pd(rc, rd);
-  // Columns: lane i holds point i (a, b, c, d) relative to t.
-  const __m256d x = _mm256_sub_pd(_mm256_permute2f128_pd(ab_xz, cd_xz, 0x20), _mm256_broadcast_sd(t));
-  const __m256d y = _mm256_sub_pd(_mm256_permute2f128_pd(ab_yw, cd_yw, 0x20), _mm256_broadcast_sd(t + 1));
-  const __m256d z = _mm256_sub_pd(_mm256_permute2f128_pd(ab_xz, cd_xz, 0x31), _mm256_broadcast_sd(t + 2));
-  const __m256d lift = _mm256_fmadd_pd(z, z, _mm256_fmadd_pd(y, y, _mm256_mul_pd(x, x)));
+  return {_mm256_sub_pd(_mm256_permute2f128_pd(ab_xz, cd_xz, 0x20), _mm256_broadcast_sd(t)),
+          _mm256_sub_pd(_mm256_permute2f128_pd(ab_yw, cd_yw, 0x20), _mm256_broadcast_sd(t + 1)),
+          _mm256_sub_pd(_mm256_permute2f128_pd(ab_xz, cd_xz, 0x31), _mm256_broadcast_sd(t + 2))};
+}
 
-  constexpr int next = _MM_SHUFFLE(0, 3, 2, 1), opposite = _MM_SHUFFLE(1, 0, 3, 2);
-  const __m256d x1 = _mm256_permute4x64_pd(x, next), y1 = _mm256_permute4x64_pd(y, next);
-  const __m256d x2 = _mm256_permute4x64_pd(x, opposite), y2 = _mm256_permute4x64_pd(y, opposite);
-  // 2x2 minors of consecutive points (ab, bc, cd, da) and of opposite ones (ac, bd, ca, db).
-  const __m256d m1 = _mm256_fmsub_pd(x, y1, _mm256_mul_pd(x1, y));
-  const __m256d m2 = _mm256_fmsub_pd(x, y2, _mm256_mul_pd(x2, y));
-  // 3x3 minors of three consecutive points (abc, bcd, cda, dab).
-  const __m256d z1 = _mm256_permute4x64_pd(z, next), z2 = _mm256_permute4x64_pd(z, opposite);
-  const __m256d m3 = _mm256_fmadd_pd(z2, m1, _mm256_fmsub_pd(z, _mm256_permute4x64_pd(m1, next),
-                                                              _mm256_mul_pd(z1, m2)));
+constexpr int next = _MM_SHUFFLE(0, 3, 2, 1), opposite = _MM_SHUFFLE(1, 0, 3, 2);
+
+// Lane i: the 3x3 determinant of points i, i+1, i+2 (mod 4), expanded along
+// z on the 2x2 minors of consecutive points (ab, bc, cd, da) and of opposite
+// ones (ac, bd, ca, db): (abc, bcd, cda, dab).
+inline __m256d consecutive_triple_minors(const Columns& q)
+{
+  const __m256d x1 = _mm256_permute4x64_pd(q.x, next), y1 = _mm256_permute4x64_pd(q.y, next);
+  const __m256d x2 = _mm256_permute4x64_pd(q.x, opposite), y2 = _mm256_permute4x64_pd(q.y, opposite);
+  const __m256d m1 = _mm256_fmsub_pd(q.x, y1, _mm256_mul_pd(x1, q.y));
+  const __m256d m2 = _mm256_fmsub_pd(q.x, y2, _mm256_mul_pd(x2, q.y));
+  const __m256d z1 = _mm256_permute4x64_pd(q.z, next), z2 = _mm256_permute4x64_pd(q.z, opposite);
+  return _mm256_fmadd_pd(z2, m1, _mm256_fmsub_pd(q.z, _mm256_permute4x64_pd(m1, next), _mm256_mul_pd(z1, m2)));
+}
+
+} // namespace simd_records
+
+// in_sphere_determinant(a, b, c, d, t) for vertex records a, b, c, d.
+inline double in_sphere_determinant_of_records(const double* a, const double* b, const double* c,
+                                               const double* d, const double* t)
+{
+  using namespace simd_records;
+  const Columns q = columns_relative_to(a, b, c, d, t);
+  const __m256d lift = _mm256_fmadd_pd(q.z, q.z, _mm256_fmadd_pd(q.y, q.y, _mm256_mul_pd(q.x, q.x)));
+  const __m256d triples = consecutive_triple_minors(q);
   // det = (blift cda + dlift abc) - (alift bcd + clift dab).
-  const __m256d terms = _mm256_mul_pd(lift, _mm256_permute4x64_pd(m3, next));
+  const __m256d terms = _mm256_mul_pd(lift, _mm256_permute4x64_pd(triples, next));
   const __m128d pairs = _mm_add_pd(_mm256_castpd256_pd128(terms), _mm256_extractf128_pd(terms, 1));
   return _mm_cvtsd_f64(_mm_unpackhi_pd(pairs, pairs)) - _mm_cvtsd_f64(pairs);
+}
+
+// Lane f: orientation_determinant of the tetrahedron (a, b, c, d) of vertex
+// records with its vertex f replaced by t, i.e. the signed volume that t
+// makes with facet f.  With t as origin, that volume is (-1)^f times the
+// determinant of the three other points, a cyclic triple up to an even
+// permutation: (bcd, -cda, dab, -abc).
+inline __m256d facet_orientations_of_records(const double* a, const double* b, const double* c,
+                                             const double* d, const double* t)
+{
+  using namespace simd_records;
+  const __m256d triples = consecutive_triple_minors(columns_relative_to(a, b, c, d, t));
+  return _mm256_xor_pd(_mm256_permute4x64_pd(triples, next), _mm256_set_pd(-0.0, 0.0, -0.0, 0.0));
 }
 #endif
 
@@ -447,7 +483,7 @@ __attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_static_stag
 inline bool finite_record_in_conflict(const double* a, const double* b, const double* c,
                                       const double* d, const double* p, const Static_filter& filter)
 {
-#ifdef CGAL_FDT3_SIMD_IN_SPHERE
+#ifdef CGAL_FDT3_SIMD_RECORDS
   const double det = in_sphere_determinant_of_records(a, b, c, d, p);
 #else
   const double det = in_sphere_determinant(a, b, c, d, p);
