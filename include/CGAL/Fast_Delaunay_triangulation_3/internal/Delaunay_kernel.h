@@ -524,9 +524,9 @@ private:
     std::uint64_t& tag = m_.vertices[v].scratch;
     if(tag == 0) {
       s_.boundary_vertices.push_back(v);
-      tag = s_.boundary_vertices.size();
+      tag = std::min<std::uint64_t>(s_.boundary_vertices.size(), Insertion_scratch::table_size - 1);
     }
-    return static_cast<std::uint8_t>(std::min<std::uint64_t>(tag, Insertion_scratch::table_size - 1));
+    return static_cast<std::uint8_t>(tag);
   }
 
   // Every table entry read in the second pass was written in the first: the
