@@ -301,7 +301,9 @@ public:
     CGAL_assertion(complete); // only a partitioned kernel stops early
     (void)complete;
     visit();
-    undo_cavity();
+    // cavity() has already cleared the outside marks.
+    for(Tet_id t : s_.cavity) m_.unmark_free(t);
+    clear_boundary_numbers();
   }
 
   // DELAUNAYBALL on a hole the caller chose (CGAL's insert_in_hole): the
@@ -436,6 +438,11 @@ private:
   {
     for(Tet_id t : s_.cavity) m_.unmark_free(t);
     clear_outside_flags();
+    clear_boundary_numbers();
+  }
+
+  void clear_boundary_numbers()
+  {
     for(Vertex_id v : s_.boundary_vertices) m_.vertices[v].scratch = 0;
   }
 
@@ -483,7 +490,7 @@ private:
       glue_with_sorted_edges(p);
       ++s_.stats.large_cavities;
     }
-    for(Vertex_id v : s_.boundary_vertices) m_.vertices[v].scratch = 0;
+    clear_boundary_numbers();
     s_.live_delta += static_cast<std::ptrdiff_t>(facets) - static_cast<std::ptrdiff_t>(s_.cavity.size());
     s_.stats.ball_tets += facets;
     return true;
