@@ -157,7 +157,7 @@ double logged_seconds(const std::string& log, const std::string& label)
 }
 
 
-// HXT through Gmsh's API, from the same triangles: one discrete surface per component, node tags = input point number + 1 (so the input triangles keep their numbers in the output).
+// HXT through Gmsh's API, from the same triangles: one discrete surface per component.
 Tool_mesh run_hxt(const Benchmark_surface& s, int threads)
 {
   gmsh::clear();
@@ -223,16 +223,19 @@ Tool_mesh run_hxt(const Benchmark_surface& s, int threads)
   std::size_t largest = 0;
   for(std::size_t tag : node_tags) largest = std::max(largest, tag);
   std::vector<std::uint32_t> index_of_tag(largest + 1, std::uint32_t(-1));
-  // Input points first, at their own numbers, whatever order Gmsh lists the nodes in.
-  mesh.points.resize(s.points.size());
+  // Input points first, at their own numbers, found by their coordinates: Gmsh renumbers the nodes of some
+  // inputs after meshing (the elephant's came back with other tags), so tags cannot be trusted.  A surface node at
+  // a new position is a Steiner point on the surface, and the boundary check will say so.
+  std::map<Point, std::uint32_t> input_point;
+  for(std::size_t i = 0; i < s.points.size(); ++i) input_point.emplace(s.points[i], static_cast<std::uint32_t>(i));
+  mesh.points = s.points;
   for(std::size_t k = 0; k < node_tags.size(); ++k) {
-    const std::size_t tag = node_tags[k];
     const Point xyz{coordinates[3 * k], coordinates[3 * k + 1], coordinates[3 * k + 2]};
-    if(tag >= 1 && tag <= s.points.size()) {
-      index_of_tag[tag] = static_cast<std::uint32_t>(tag - 1);
-      mesh.points[tag - 1] = xyz;
+    auto it = input_point.find(xyz);
+    if(it != input_point.end()) {
+      index_of_tag[node_tags[k]] = it->second;
     } else {
-      index_of_tag[tag] = static_cast<std::uint32_t>(mesh.points.size());
+      index_of_tag[node_tags[k]] = static_cast<std::uint32_t>(mesh.points.size());
       mesh.points.push_back(xyz);
     }
   }
