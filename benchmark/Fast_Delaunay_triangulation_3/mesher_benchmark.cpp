@@ -36,13 +36,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
-#include <map>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -113,6 +112,10 @@ void run_gmsh_helper(const std::vector<std::string>& arguments)
   const pid_t pid = ::fork();
   if(pid < 0) throw std::runtime_error("fork failed");
   if(pid == 0) {
+    // libgomp's default lets idle threads spin: on a machine with other work, HXT's 2 threads then wait for each
+    // other at every parallel section (elephant at load 4.3: 1.9 s on 2 threads, 0.07 s on 1; 0.07 s on 2 with
+    // PASSIVE).  An OMP_WAIT_POLICY given by the caller is kept.
+    ::setenv("OMP_WAIT_POLICY", "PASSIVE", 0);
     ::execv(argv[0], argv.data());
     std::_Exit(127);
   }
@@ -211,12 +214,12 @@ std::string captured_stdout(const std::function<void()>& work)
   return text;
 }
 
-// The number after "`label`:" in `log` (0 if absent).
+// The number after "`label`:" in TetGen's log (0 if absent).
 double logged_seconds(const std::string& log, const std::string& label)
 {
   const std::size_t at = log.find(label);
   if(at == std::string::npos) return 0;
-  const std::size_t colon = log.find_first_of(":=", at + label.size());
+  const std::size_t colon = log.find(':', at + label.size());
   return colon == std::string::npos ? 0 : std::atof(log.c_str() + colon + 1);
 }
 
@@ -388,7 +391,8 @@ void print_header(int rounds)
   if(gmsh_helper().empty())
     std::printf(", no Gmsh helper (libgmsh-dev absent at build time: no HXT rows, no fibres)");
   else
-    std::printf(", Gmsh's HXT through %s", gmsh_helper().c_str());
+    std::printf(", Gmsh's HXT through %s (OMP_WAIT_POLICY=%s)", gmsh_helper().c_str(),
+                std::getenv("OMP_WAIT_POLICY") ? std::getenv("OMP_WAIT_POLICY") : "PASSIVE");
 #ifndef NDEBUG
   std::printf(", assertions ON (not a Release build: times are not representative)");
 #endif
@@ -515,8 +519,7 @@ std::vector<Tool> tools()
   std::vector<Tool> t;
   t.push_back({"ours", 1, [](const Benchmark_surface& s) { return run_ours(s, 1); }});
   t.push_back({"ours", 2, [](const Benchmark_surface& s) { return run_ours(s, 2); }});
-  // HXT on 1 thread too: on a loaded 2-core machine its OpenMP threads wait for each other (elephant, load 4.3:
-  // 0.07 s on 1 thread, 1.9 s on 2).
+  // HXT on 1 thread too, beside ours on 1 thread.
   if(!gmsh_helper().empty()) {
     t.push_back({"gmsh-hxt", 1, [](const Benchmark_surface& s) { return run_hxt(s, 1); }});
     t.push_back({"gmsh-hxt", 2, [](const Benchmark_surface& s) { return run_hxt(s, 2); }});
@@ -560,6 +563,8 @@ int main(int argc, char** argv)
                      row.tool->name.c_str(), row.tool->threads);
       }
     print_table(rows);
+    std::printf("load average %.2f at the end (above the usable cores: other work competed with the tools)\n",
+                load_average());
     std::filesystem::remove_all(scratch_directory());
   } catch(const std::exception& e) {
     std::fprintf(stderr, "mesher_benchmark: %s\n", e.what());
