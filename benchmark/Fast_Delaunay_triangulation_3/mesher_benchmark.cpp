@@ -510,7 +510,10 @@ std::vector<Benchmark_surface> load_surfaces(const Options& o)
     surfaces.push_back(read_cgal_surface(path));
     surfaces.back().maximum_size = o.maximum_size;
   }
-  if(o.fibres > 0 && !gmsh_helper().empty()) surfaces.push_back(fibre_cube(o.fibres, o.fibre_size, 1));
+  if(o.fibres > 0 && gmsh_helper().empty())
+    std::printf("note: no Gmsh helper (libgmsh-dev absent at build time): no fibre cube\n");
+  else if(o.fibres > 0)
+    surfaces.push_back(fibre_cube(o.fibres, o.fibre_size, 1));
   return surfaces;
 }
 
