@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Installs, with apt, whatever this package needs that Debian 12 does not have yet: the compiler, CMake, CGAL and
 # its number types (GMP, MPFR, Boost), TBB for the parallel engines, GoogleTest, TetGen for the mesher's boundary
-# recovery, meshio (Python) to read the mesher's files back in a test. Does nothing if all are present.
+# recovery, meshio (Python) to read the mesher's files back in a test, CGAL's data surfaces (libcgal-demo) for the
+# mesher's CGAL-data test and benchmark, Gmsh's library (HXT, OpenCASCADE) for that benchmark. Does nothing if all
+# are present.
 set -euo pipefail
 
-packages=(build-essential cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev libgtest-dev libtet1.5-dev python3-meshio)
+packages=(build-essential cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev libgtest-dev libtet1.5-dev python3-meshio libcgal-demo libgmsh-dev)
 
 missing=()
 for package in "${packages[@]}"; do

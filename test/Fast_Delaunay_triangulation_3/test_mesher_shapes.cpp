@@ -1,7 +1,8 @@
 // Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The mesher on closed surfaces: cube, sphere, torus, two nested spheres.
+// The mesher on closed surfaces: cube, sphere, torus, two nested spheres, and
+// two of CGAL's own data surfaces (libcgal-demo).
 // Every check is independent of the mesher's own report: orientation by
 // CGAL's exact predicate, volumes against the volume the surface encloses,
 // the boundary rebuilt from the tetrahedra and compared, by coordinates,
@@ -10,6 +11,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
 
 #include <gtest/gtest.h>
 
@@ -18,8 +20,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <limits>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace {
@@ -217,6 +222,47 @@ TEST(Mesher, QualityReportAgreesWithIndependentChecks)
   Mesh broken = mesh;
   broken.triangles.pop_back();
   EXPECT_FALSE(CGAL::Fast_mesher_3::quality_report(broken).boundary_equals_input());
+}
+
+// A surface of CGAL's data, extracted from libcgal-demo's archive by CMake
+// (cmake/Fdt3CgalData.cmake); false when it is not there.
+bool read_cgal_data_surface(const std::string& name, Surface& s)
+{
+  const std::string path = std::string(FDT3_CGAL_DATA_DIR) + "/" + name;
+  if(!std::ifstream(path)) return false;
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  EXPECT_TRUE(CGAL::IO::read_polygon_soup(path, points, polygons)) << path;
+  for(const auto& p : points) s.points.push_back({p.x(), p.y(), p.z()});
+  for(const auto& p : polygons) {
+    EXPECT_EQ(p.size(), 3u);
+    s.triangles.push_back({p[0], p[1], p[2]});
+  }
+  return true;
+}
+
+// CGAL's elephant: a fine organic surface whose triangles the empty mesh
+// already has (no TetGen), h from the surface alone.
+TEST(Mesher, CgalDataElephant)
+{
+  Surface s;
+  if(!read_cgal_data_surface("elephant.off", s))
+    GTEST_SKIP() << FDT3_CGAL_DATA_DIR "/elephant.off is missing (apt install libcgal-demo, re-run CMake)";
+  CGAL::Fast_mesher_3::Mesher_statistics stats;
+  mesh_and_check_one_volume(s, std::numeric_limits<double>::infinity(), stats);
+}
+
+// CGAL's couplingdown, a mechanical part: long thin triangles on flat faces
+// and holes, hundreds of them missing from the empty mesh (TetGen's recovery).
+TEST(Mesher, CgalDataMechanicalPart)
+{
+  Surface s;
+  if(!read_cgal_data_surface("couplingdown.off", s))
+    GTEST_SKIP() << FDT3_CGAL_DATA_DIR "/couplingdown.off is missing (apt install libcgal-demo, re-run CMake)";
+  CGAL::Fast_mesher_3::Mesher_statistics stats;
+  mesh_and_check_one_volume(s, std::numeric_limits<double>::infinity(), stats);
+  EXPECT_GT(stats.missing_triangles, 0u);
+  EXPECT_TRUE(stats.used_tetgen);
 }
 
 } // namespace
