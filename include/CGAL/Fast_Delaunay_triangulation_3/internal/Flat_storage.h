@@ -45,10 +45,6 @@
 #include <utility>
 #include <vector>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 
@@ -179,25 +175,6 @@ private:
     block_ = grown;
     data_ = reinterpret_cast<T*>(grown + offset);
     capacity_ = n;
-    advise_huge_pages(grown, n * sizeof(T) + alignment);
-  }
-
-  // The kernel reads the tetrahedron and vertex arrays at random offsets of
-  // arrays of hundreds of megabytes: with 4 KiB pages nearly every cavity
-  // step misses the TLB.  Where transparent huge pages are "madvise" only
-  // (Debian's default), ask for them on blocks that span several 2 MiB pages.
-  static void advise_huge_pages(char* block, std::size_t bytes)
-  {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr std::size_t huge_page = std::size_t(1) << 21;
-    if(bytes < 4 * huge_page) return;
-    const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(block) + huge_page - 1) & ~(huge_page - 1);
-    const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(block) + bytes) & ~(huge_page - 1);
-    if(last > first) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE); // a hint: errors ignored
-#else
-    (void)block;
-    (void)bytes;
-#endif
   }
 
   char* block_ = nullptr;
