@@ -241,9 +241,10 @@ private:
       Tet_id hint = hints[j];
       for(std::size_t i = cut[j]; i < cut[j + 1]; ++i) {
         const Vertex_id v = items[i].value;
+        const double* next = i + 1 < cut[j + 1] ? m_.point(items[i + 1].value) : nullptr;
         Vertex_id existing = ghost_vertex;
         const Insertion_result r =
-            hint == no_tet ? Insertion_result::aborted : kernel.insert(v, hint, existing);
+            hint == no_tet ? Insertion_result::aborted : kernel.insert(v, hint, existing, next);
         if(r == Insertion_result::duplicate) duplicate_of[v - first_new] = existing;
         else if(r == Insertion_result::aborted) failures[j].push_back(v);
       }

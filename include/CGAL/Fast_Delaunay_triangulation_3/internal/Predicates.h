@@ -478,6 +478,27 @@ __attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_static_stag
   return perturbed_tie_break(a, b, c, d, p) > 0;
 }
 
+// The conflict tests return the sign of a filtered determinant as data,
+// with one rarely taken branch for undecided values: the cavity search uses
+// the result without branching on it, because no predictor can learn it.
+// Written so that the compiler cannot turn |det| > bound back into two
+// branches on the sign of det.
+inline bool beyond_bound(double det, double bound)
+{
+  double magnitude = std::fabs(det);
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+  __asm__("" : "+x"(magnitude)); // opaque: keeps the comparison on the magnitude
+#endif
+  return magnitude > bound;
+}
+
+inline bool sign_bit(double x)
+{
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return (bits >> 63) != 0;
+}
+
 // finite_cell_in_conflict for a, b, c, d that are vertex records (32 bytes
 // readable from each pointer).
 inline bool finite_record_in_conflict(const double* a, const double* b, const double* c,
@@ -488,9 +509,9 @@ inline bool finite_record_in_conflict(const double* a, const double* b, const do
 #else
   const double det = in_sphere_determinant(a, b, c, d, p);
 #endif
-  if(det < -filter.in_sphere) return true;
-  if(det > filter.in_sphere) return false;
-  return finite_cell_in_conflict_beyond_static_stage(det, a, b, c, d, p);
+  if(__builtin_expect(!beyond_bound(det, filter.in_sphere), 0))
+    return finite_cell_in_conflict_beyond_static_stage(det, a, b, c, d, p);
+  return sign_bit(det);
 }
 
 inline bool finite_cell_in_conflict(const double* a, const double* b, const double* c,
@@ -519,9 +540,9 @@ inline bool ghost_cell_in_conflict(const double* a, const double* b, const doubl
                                    const double* p, const Static_filter& filter = Static_filter())
 {
   const double det = orientation_determinant(a, b, c, p);
-  if(det > filter.orientation) return true;
-  if(det < -filter.orientation) return false;
-  return ghost_cell_in_conflict_beyond_static_stage(a, b, c, p);
+  if(__builtin_expect(!beyond_bound(det, filter.orientation), 0))
+    return ghost_cell_in_conflict_beyond_static_stage(a, b, c, p);
+  return !sign_bit(det);
 }
 
 } // namespace Fast_Delaunay_triangulation_3_internal
