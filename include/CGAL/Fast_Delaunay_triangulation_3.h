@@ -892,9 +892,9 @@ public:
   Bounded_side side_of_facet(const Point& p, Cell_handle c, Locate_type& lt, int& li, int& lj) const
   {
     CGAL_precondition(dimension() == 2);
-    typename Lower::Locate_type type;
+    typename Lower::Locate_type type = unset_locate_type();
     const Bounded_side side = lower().delaunay().side_of_facet(to_reference(p), to_reference(c), type, li, lj);
-    lt = static_cast<Locate_type>(type);
+    if(type != unset_locate_type()) lt = static_cast<Locate_type>(type);
     return side;
   }
   Bounded_side side_of_facet(const Point& p, const Facet& f, Locate_type& lt, int& li, int& lj) const
@@ -906,9 +906,9 @@ public:
   Bounded_side side_of_edge(const Point& p, Cell_handle c, Locate_type& lt, int& li) const
   {
     CGAL_precondition(dimension() == 1);
-    typename Lower::Locate_type type;
+    typename Lower::Locate_type type = unset_locate_type();
     const Bounded_side side = lower().delaunay().side_of_edge(to_reference(p), to_reference(c), type, li);
-    lt = static_cast<Locate_type>(type);
+    if(type != unset_locate_type()) lt = static_cast<Locate_type>(type);
     return side;
   }
   Bounded_side side_of_edge(const Point& p, const Edge& e, Locate_type& lt, int& li) const
@@ -1501,6 +1501,10 @@ private:
   // and ours, both ways.  A CGAL cell without a slot is the cell of the
   // empty triangulation, which has no copy: a null handle.
   const Lower& lower() const { return core_.lower; }
+  // CGAL's side_of_facet / side_of_edge leave lt alone outside the simplex:
+  // a value no enumerator has (but in the enum's range, 0..7) tells, so
+  // that ours leave the caller's lt alone too.
+  static typename Lower::Locate_type unset_locate_type() { return static_cast<typename Lower::Locate_type>(7); }
   Cell_handle from_reference(Reference_cell c) const
   {
     if(c == Reference_cell() || Lower::slot(c) == Fast_Delaunay_triangulation_3_internal::lower_dimensions_detail::Slot::none)

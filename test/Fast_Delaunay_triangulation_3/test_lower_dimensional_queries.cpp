@@ -95,26 +95,10 @@ typename Tr::Vertex_handle vertex_at(const Tr& tr, const Point_key& p)
   return typename Tr::Vertex_handle();
 }
 
-// Every cell of a triangulation of dimension 0, 1 or 2 (through the vertices).
-template <class Tr>
-std::vector<typename Tr::Cell_handle> all_cells_below_3(const Tr& tr)
-{
-  std::vector<typename Tr::Cell_handle> cells;
-  if(tr.dimension() == 2)
-    for(auto f = tr.all_facets_begin(); f != tr.all_facets_end(); ++f) cells.push_back(f->first);
-  if(tr.dimension() == 1)
-    for(auto e = tr.all_edges_begin(); e != tr.all_edges_end(); ++e) cells.push_back(e->first);
-  if(tr.dimension() == 0) {
-    cells.push_back(tr.finite_vertices_begin()->cell());
-    cells.push_back(cells.back()->neighbor(0));
-  }
-  return cells;
-}
-
 template <class Tr>
 typename Tr::Cell_handle cell_with_key(const Tr& tr, const Simplex_key& key)
 {
-  for(auto c : all_cells_below_3(tr))
+  for(auto c : lower_dimensional_cells(tr))
     if(cell_key(tr, c) == key) return c;
   return typename Tr::Cell_handle();
 }
@@ -170,7 +154,7 @@ void expect_same_locations(const Fast_dt& fast, const Cgal_dt& cgal, const std::
   // Hints: no hint, then every cell of ours (a sample for large inputs) as start.
   std::vector<Fast_dt::Cell_handle> starts(1, Fast_dt::Cell_handle());
   if(fast.dimension() >= 0) {
-    const auto cells = all_cells_below_3(fast);
+    const auto cells = lower_dimensional_cells(fast);
     for(std::size_t i = 0; i < cells.size(); i += 1 + cells.size() / 8) starts.push_back(cells[i]);
   }
   for(const Point& q : queries) {
@@ -220,12 +204,13 @@ void expect_same_sides(const Fast_dt& fast, const Cgal_dt& cgal, const std::vect
 {
   const int d = cgal.dimension();
   if(d != 1 && d != 2) return;
-  for(const Fast_dt::Cell_handle c : all_cells_below_3(fast)) {
+  for(const Fast_dt::Cell_handle c : lower_dimensional_cells(fast)) {
     const Cgal_dt::Cell_handle cc = cell_with_key(cgal, cell_key(fast, c));
     ASSERT_TRUE(cc != Cgal_dt::Cell_handle());
     for(const Point& q : queries) {
-      Fast_dt::Locate_type lt;
-      Cgal_dt::Locate_type clt;
+      // Both leave lt alone outside the simplex.
+      Fast_dt::Locate_type lt = Fast_dt::OUTSIDE_AFFINE_HULL;
+      Cgal_dt::Locate_type clt = Cgal_dt::OUTSIDE_AFFINE_HULL;
       int li = -1, lj = -1, cli = -1, clj = -1;
       CGAL::Bounded_side side, cside;
       if(d == 2) {
@@ -245,8 +230,8 @@ void expect_same_sides(const Fast_dt& fast, const Cgal_dt& cgal, const std::vect
         cside = cgal.side_of_edge(q, cc, clt, cli);
       }
       ASSERT_EQ(side, cside);
-      if(side == CGAL::ON_UNBOUNDED_SIDE) continue;
       ASSERT_EQ(static_cast<int>(lt), static_cast<int>(clt));
+      if(side == CGAL::ON_UNBOUNDED_SIDE) continue;
       if(lt == Fast_dt::VERTEX) {
         EXPECT_EQ(key_of(fast, {c->vertex(li)}), key_of(cgal, {cc->vertex(cli)}));
       }
@@ -266,74 +251,63 @@ std::vector<Simplex_key> keys_of_cells(const Tr& tr, const std::vector<Handle>& 
   return sorted(k);
 }
 
+// An element that a query writes (cell, facet, edge or vertex), as points.
+template <class Tr>
+struct Element_key
+{
+  const Tr& tr;
+  Simplex_key operator()(const typename Tr::Cell_handle& c) const { return cell_key(tr, c); }
+  Simplex_key operator()(const typename Tr::Facet& f) const { return facet_key(tr, f); }
+  Simplex_key operator()(const typename Tr::Edge& e) const { return edge_key(tr, e); }
+  Simplex_key operator()(const typename Tr::Vertex_handle& v) const { return key_of(tr, {v}); }
+};
+
+// One query on both triangulations (`query(tr, out)` writes elements of
+// type Element<Tr> to out): the same elements, as a multiset.
+template <template <class> class Element, class Query>
+void expect_same_output(const Fast_dt& fast, const Cgal_dt& cgal, const Query& query)
+{
+  std::vector<Element<Fast_dt>> a;
+  std::vector<Element<Cgal_dt>> b;
+  query(fast, std::back_inserter(a));
+  query(cgal, std::back_inserter(b));
+  std::vector<Simplex_key> ka, kb;
+  for(const auto& x : a) ka.push_back(Element_key<Fast_dt>{fast}(x));
+  for(const auto& x : b) kb.push_back(Element_key<Cgal_dt>{cgal}(x));
+  EXPECT_EQ(sorted(ka), sorted(kb));
+}
+template <class Tr> using Cell_of = typename Tr::Cell_handle;
+template <class Tr> using Facet_of = typename Tr::Facet;
+template <class Tr> using Edge_of = typename Tr::Edge;
+template <class Tr> using Vertex_of = typename Tr::Vertex_handle;
+
 // The incident and adjacent elements of every vertex, the infinite one
 // included, as multisets of point sets; degree.
 void expect_same_adjacency(const Fast_dt& fast, const Cgal_dt& cgal)
 {
   for(auto cv = cgal.all_vertices_begin(); cv != cgal.all_vertices_end(); ++cv) {
-    const Cgal_dt::Vertex_handle c = cv;
-    const Fast_dt::Vertex_handle f = vertex_at(fast, vertex_point_key(cgal, c));
-    ASSERT_TRUE(f != Fast_dt::Vertex_handle());
-    SCOPED_TRACE(cgal.is_infinite(c) ? std::string("infinite vertex") : "vertex at x " + std::to_string(c->point().x()));
-    EXPECT_EQ(fast.degree(f), cgal.degree(c));
-    {
-      std::vector<Fast_dt::Cell_handle> a, fa;
-      std::vector<Cgal_dt::Cell_handle> b, fb;
-      fast.incident_cells(f, std::back_inserter(a));
-      cgal.incident_cells(c, std::back_inserter(b));
-      fast.finite_incident_cells(f, std::back_inserter(fa));
-      cgal.finite_incident_cells(c, std::back_inserter(fb));
-      EXPECT_EQ(keys_of_cells(fast, a), keys_of_cells(cgal, b));
-      EXPECT_EQ(keys_of_cells(fast, fa), keys_of_cells(cgal, fb));
-    }
+    const Point_key at = vertex_point_key(cgal, cv);
+    ASSERT_TRUE(vertex_at(fast, at) != Fast_dt::Vertex_handle());
+    SCOPED_TRACE(cgal.is_infinite(cv) ? std::string("infinite vertex") : "vertex at x " + std::to_string(cv->point().x()));
+    EXPECT_EQ(fast.degree(vertex_at(fast, at)), cgal.degree(cv));
+    // The same vertex in either triangulation.
+    auto v = [&at](const auto& tr) { return vertex_at(tr, at); };
+    expect_same_output<Cell_of>(fast, cgal, [&](const auto& tr, auto out) { tr.incident_cells(v(tr), out); });
+    expect_same_output<Cell_of>(fast, cgal, [&](const auto& tr, auto out) { tr.finite_incident_cells(v(tr), out); });
     if(cgal.dimension() >= 2) {
-      std::vector<Fast_dt::Facet> a, fa;
-      std::vector<Cgal_dt::Facet> b, fb;
-      fast.incident_facets(f, std::back_inserter(a));
-      cgal.incident_facets(c, std::back_inserter(b));
-      fast.finite_incident_facets(f, std::back_inserter(fa));
-      cgal.finite_incident_facets(c, std::back_inserter(fb));
-      std::vector<Simplex_key> ka, kb, kfa, kfb;
-      for(const auto& x : a) ka.push_back(facet_key(fast, x));
-      for(const auto& x : b) kb.push_back(facet_key(cgal, x));
-      for(const auto& x : fa) kfa.push_back(facet_key(fast, x));
-      for(const auto& x : fb) kfb.push_back(facet_key(cgal, x));
-      EXPECT_EQ(sorted(ka), sorted(kb));
-      EXPECT_EQ(sorted(kfa), sorted(kfb));
+      expect_same_output<Facet_of>(fast, cgal, [&](const auto& tr, auto out) { tr.incident_facets(v(tr), out); });
+      expect_same_output<Facet_of>(fast, cgal,
+                                   [&](const auto& tr, auto out) { tr.finite_incident_facets(v(tr), out); });
     }
     if(cgal.dimension() >= 1) {
-      std::vector<Fast_dt::Edge> a, fa;
-      std::vector<Cgal_dt::Edge> b, fb;
-      fast.incident_edges(f, std::back_inserter(a));
-      cgal.incident_edges(c, std::back_inserter(b));
-      fast.finite_incident_edges(f, std::back_inserter(fa));
-      cgal.finite_incident_edges(c, std::back_inserter(fb));
-      std::vector<Simplex_key> ka, kb, kfa, kfb;
-      for(const auto& x : a) ka.push_back(edge_key(fast, x));
-      for(const auto& x : b) kb.push_back(edge_key(cgal, x));
-      for(const auto& x : fa) kfa.push_back(edge_key(fast, x));
-      for(const auto& x : fb) kfb.push_back(edge_key(cgal, x));
-      EXPECT_EQ(sorted(ka), sorted(kb));
-      EXPECT_EQ(sorted(kfa), sorted(kfb));
+      expect_same_output<Edge_of>(fast, cgal, [&](const auto& tr, auto out) { tr.incident_edges(v(tr), out); });
+      expect_same_output<Edge_of>(fast, cgal,
+                                  [&](const auto& tr, auto out) { tr.finite_incident_edges(v(tr), out); });
     }
-    {
-      std::vector<Fast_dt::Vertex_handle> a, fa;
-      std::vector<Cgal_dt::Vertex_handle> b, fb;
-      fast.adjacent_vertices(f, std::back_inserter(a));
-      cgal.adjacent_vertices(c, std::back_inserter(b));
-      fast.finite_adjacent_vertices(f, std::back_inserter(fa));
-      cgal.finite_adjacent_vertices(c, std::back_inserter(fb));
-      std::vector<Point_key> ka, kb, kfa, kfb;
-      for(const auto& x : a) ka.push_back(vertex_point_key(fast, x));
-      for(const auto& x : b) kb.push_back(vertex_point_key(cgal, x));
-      for(const auto& x : fa) kfa.push_back(vertex_point_key(fast, x));
-      for(const auto& x : fb) kfb.push_back(vertex_point_key(cgal, x));
-      EXPECT_EQ(sorted(ka), sorted(kb));
-      EXPECT_EQ(sorted(kfa), sorted(kfb));
-      std::vector<Fast_dt::Vertex_handle> same;
-      fast.incident_vertices(f, std::back_inserter(same));
-      EXPECT_EQ(same.size(), a.size());
-    }
+    expect_same_output<Vertex_of>(fast, cgal, [&](const auto& tr, auto out) { tr.adjacent_vertices(v(tr), out); });
+    expect_same_output<Vertex_of>(fast, cgal,
+                                  [&](const auto& tr, auto out) { tr.finite_adjacent_vertices(v(tr), out); });
+    expect_same_output<Vertex_of>(fast, cgal, [&](const auto& tr, auto out) { tr.incident_vertices(v(tr), out); });
   }
 }
 
@@ -349,14 +323,14 @@ void expect_same_is_edge_and_facet(const Fast_dt& fast, const Cgal_dt& cgal)
     for(std::size_t b = 0; b < cv.size(); ++b) {
       Fast_dt::Cell_handle fc;
       Cgal_dt::Cell_handle cc;
-      int i, j, ci, cj;
+      int i = -1, j = -1, ci = -1, cj = -1;
       const bool edge = cgal.is_edge(cv[a], cv[b], cc, ci, cj);
       ASSERT_EQ(fast.is_edge(fv[a], fv[b], fc, i, j), edge);
       if(edge) {
         EXPECT_TRUE(fc->vertex(i) == fv[a] && fc->vertex(j) == fv[b]);
       }
       for(std::size_t c = b + 1; c < cv.size(); ++c) {
-        int k, ck;
+        int k = -1, ck = -1;
         const bool facet = cgal.is_facet(cv[a], cv[b], cv[c], cc, ci, cj, ck);
         ASSERT_EQ(fast.is_facet(fv[a], fv[b], fv[c], fc, i, j, k), facet);
         if(facet) {
@@ -364,7 +338,7 @@ void expect_same_is_edge_and_facet(const Fast_dt& fast, const Cgal_dt& cgal)
         }
       }
     }
-  for(const Fast_dt::Cell_handle c : all_cells_below_3(fast)) {
+  for(const Fast_dt::Cell_handle c : lower_dimensional_cells(fast)) {
     EXPECT_FALSE(fast.is_cell(c)) << "CGAL has no cells below dimension 3";
   }
 }
@@ -385,7 +359,7 @@ void expect_same_insertions(const std::vector<Point>& points, const Point& q)
     std::vector<Fast_dt::Cell_handle> fast_cells;
     std::vector<Cgal_dt::Cell_handle> cgal_cells;
     Fast_dt::Vertex_handle v;
-    const auto fcells = all_cells_below_3(fast);
+    const auto fcells = lower_dimensional_cells(fast);
     const Fast_dt::Cell_handle hint = fcells.empty() ? Fast_dt::Cell_handle() : fcells.back();
     if(how == 0) v = fast.insert(q, hint);
     if(how == 1) v = fast.insert(q, fast.number_of_vertices() ? Fast_dt::Vertex_handle(fast.finite_vertices_begin())

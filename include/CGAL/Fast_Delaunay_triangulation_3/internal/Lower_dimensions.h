@@ -219,6 +219,40 @@ public:
     }
   }
 
+  // Whether the flat arrays hold exactly CGAL's cells: one live slot per
+  // CGAL cell, naming it back, with its vertices and neighbours, and the
+  // vertex ids of CGAL's vertices.  Writes the first difference to `why`.
+  bool is_copied_into(const Flat_storage& m, std::string* why) const
+  {
+    auto fail = [why](const std::string& message) {
+      if(why) *why = message;
+      return false;
+    };
+    if(!active()) return fail("no CGAL triangulation below dimension 3");
+    if(vertices_.size() != m.vertices.size()) return fail("CGAL's triangulation has another number of vertices");
+    for(Vertex_id v = 0; v < vertices_.size(); ++v) {
+      const double* p = m.point(v);
+      if(id(vertices_[v]) != v || vertices_[v]->point() != Reference_point(p[0], p[1], p[2]))
+        return fail("vertex " + std::to_string(v) + " is not CGAL's vertex of that id");
+    }
+    const int dimension = delaunay_->dimension();
+    if(dimension < 0) return m.live_tets == 0 ? true : fail("cells in dimension -1");
+    std::size_t cells = 0;
+    for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c, ++cells) {
+      const Tet_id t = slot(c);
+      const std::string at = "slot " + std::to_string(t) + ": ";
+      if(t >= m.number_of_slots() || !m.is_live(t) || t >= cells_.size() || cells_[t] != Reference_cell(c))
+        return fail("a CGAL cell has no live slot naming it");
+      for(int i = 0; i <= dimension; ++i) {
+        const Reference_cell n = c->neighbor(i);
+        if(m.vertex(t, i) != id(c->vertex(i))) return fail(at + "not CGAL's vertex " + std::to_string(i));
+        if(m.neighbor_code(t, i) != facet_code(slot(n), n->index(c)))
+          return fail(at + "not CGAL's neighbour " + std::to_string(i));
+      }
+    }
+    return cells == m.live_tets ? true : fail("live slots that are no CGAL cell");
+  }
+
 private:
   // Handles of a copied triangulation, from its infos.
   void index_handles()

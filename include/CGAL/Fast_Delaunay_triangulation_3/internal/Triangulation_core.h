@@ -567,7 +567,7 @@ inline bool Triangulation_core::is_valid(std::string* why) const
     if(why) *why = message;
     return false;
   };
-  if(dimension < 3) return lower_dimensional_cells_are_valid(mesh, dimension, why);
+  if(dimension < 3) return lower_dimensional_cells_are_valid(mesh, dimension, why) && lower.is_copied_into(mesh, why);
   const Flat_storage& m = mesh;
   std::size_t live = 0, ghosts = 0;
   std::vector<char> used(number_of_vertices(), 0);
