@@ -89,6 +89,11 @@ class Fast_Delaunay_triangulation_3 : public Triangulation_utils_3
   typedef Fast_Delaunay_triangulation_3_internal::Flat_storage Flat_storage;
   typedef Fast_Delaunay_triangulation_3_internal::Vertex_id Vertex_id;
   typedef Fast_Delaunay_triangulation_3_internal::Tet_id Tet_id;
+  typedef Fast_Delaunay_triangulation_3_internal::Lower_dimensional_triangulation Lower;
+  typedef typename Lower::Reference_cell Reference_cell;
+  typedef typename Lower::Reference_vertex Reference_vertex;
+  typedef typename Lower::Delaunay::Facet Reference_facet;
+  typedef typename Lower::Delaunay::Edge Reference_edge;
 
   static_assert(std::is_same<typename Gt::FT, double>::value,
                 "Fast_Delaunay_triangulation_3 needs a kernel with double coordinates (e.g. Epick)");
@@ -510,8 +515,9 @@ public:
     return Vertex_handle(this, v);
   }
   // CGAL's insert(p, hint): in dimension 3 the kernel's walk starts at the
-  // hint (a cell, or a cell of the vertex); below, as insert(p).  The lock
-  // zone of CGAL's parallel insertion is always granted: nothing is locked.
+  // hint (a cell, or a cell of the vertex); below, CGAL's locate starts
+  // there.  The lock zone of CGAL's parallel insertion is always granted:
+  // nothing is locked.
   Vertex_handle insert(const Point& p, Cell_handle start, bool* could_lock_zone = nullptr)
   {
     if(could_lock_zone) *could_lock_zone = true;
@@ -523,12 +529,17 @@ public:
     return insert(p, hint_cell(hint), could_lock_zone);
   }
   // CGAL's insert after locate(p, lt, li, lj, ...): a point located at a
-  // vertex is that vertex; otherwise the walk starts at c, where p is.
+  // vertex is that vertex; otherwise, in dimension 3, the walk starts at c,
+  // where p is.  Below dimension 3 CGAL's insert(p, lt, c, li, lj) runs.
   Vertex_handle insert(const Point& p, Locate_type lt, Cell_handle c, int li, int lj,
                        bool* could_lock_zone = nullptr)
   {
-    (void)lj;
-    if(dimension() == 3 && lt == VERTEX) {
+    if(dimension() < 3) {
+      if(could_lock_zone) *could_lock_zone = true;
+      std::vector<Tet_id> around;
+      return insert_below_dimension_3(p, Cell_handle(), &lt, c, li, lj, around);
+    }
+    if(lt == VERTEX) {
       if(could_lock_zone) *could_lock_zone = true;
       return c->vertex(li);
     }
@@ -537,8 +548,8 @@ public:
 
   // The cells incident to the vertex of p after its insertion, as CGAL: for
   // a new vertex, the kernel's Delaunay ball; for a point already there, the
-  // cells around that vertex.  Below dimension 3 nothing is written (this
-  // package stores no lower-dimensional cells).
+  // cells around that vertex.  Below dimension 3, CGAL's list: the triangles
+  // around the vertex in turning order, its two segments, or its point cell.
   template <class OutputItCells>
   Vertex_handle insert_and_give_new_cells(const Point& p, OutputItCells fit, Cell_handle start = Cell_handle())
   {
@@ -556,7 +567,13 @@ public:
   Vertex_handle insert_and_give_new_cells(const Point& p, Locate_type lt, Cell_handle c, int li, int lj,
                                           OutputItCells fit)
   {
-    if(dimension() == 3 && lt == VERTEX) {
+    if(dimension() < 3) {
+      std::vector<Tet_id> around;
+      const Vertex_handle v = insert_below_dimension_3(p, Cell_handle(), &lt, c, li, lj, around);
+      give_new_cells(v, around, fit);
+      return v;
+    }
+    if(lt == VERTEX) {
       const Vertex_handle v = c->vertex(li);
       give_new_cells(v, std::vector<Tet_id>(), fit);
       return v;
@@ -565,20 +582,20 @@ public:
     return insert_and_give_new_cells(p, fit, c);
   }
 
-  // CGAL's insert_in_hole (dimension 3): the cells of [cells_begin,
+  // CGAL's insert_in_hole (dimension 3 or 2): the cells of [cells_begin,
   // cells_end), distinct and forming a hole star-shaped from p (such as the
   // conflict zone of find_conflicts), are replaced by the new vertex of p
   // joined to the hole's boundary facets, with the kernel's Delaunay ball
   // step.  (begin, i) is a boundary facet of the hole, as in CGAL; the ball
-  // step finds the boundary itself.  Preconditions as CGAL's (unchecked):
-  // p is no vertex and the hole is star-shaped from it.
+  // step finds the boundary itself.  In dimension 2 the triangles of the
+  // hole are replaced by CGAL's insert_in_hole, (begin, i) a boundary edge.
+  // Preconditions as CGAL's (unchecked): p is no vertex and the hole is
+  // star-shaped from it.
   template <class CellIt>
   Vertex_handle insert_in_hole(const Point& p, CellIt cells_begin, CellIt cells_end, Cell_handle begin, int i)
   {
-    CGAL_precondition(dimension() == 3);
-    CGAL_precondition(begin != Cell_handle() && i >= 0 && i < 4);
-    (void)begin;
-    (void)i;
+    CGAL_precondition(dimension() >= 2);
+    CGAL_precondition(begin != Cell_handle() && i >= 0 && i <= dimension());
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
     std::vector<Tet_id> hole, ball;
@@ -586,26 +603,42 @@ public:
       const Cell_handle c = *cells_begin;
       hole.push_back(c.index());
     }
+    if(dimension() == 2) {
+      const Vertex_id v = core_.insert_in_hole_below_dimension_3(xyz, hole, begin.index(), i, ball);
+      vertices_added();
+      return Vertex_handle(this, v);
+    }
     const Vertex_id v = core_.insert_in_hole(xyz, hole.data(), hole.size(), ball);
     after_single_insertion(ball);
     return Vertex_handle(this, v);
   }
 
-  // ---------------------------------------------------------------- conflict zone (dimension 3)
+  // ---------------------------------------------------------------- conflict zone (dimensions 3 and 2)
   // CGAL's find_conflicts: c must be in conflict with p (e.g. the cell of
   // locate(p) when p is no vertex).  Writes the boundary facets (c', i) with
   // c' in conflict and c'->neighbor(i) not, the cells in conflict, and with
   // the third iterator each facet between two cells in conflict once.  The
   // test is the insertion's own (CGAL's perturbed in-sphere), so the zone is
   // exactly CGAL's; only the order of the output differs.  The triangulation
-  // is left unchanged (see Conflict_zone.h).
+  // is left unchanged (see Conflict_zone.h).  In dimension 2 CGAL's
+  // triangulation answers: triangles, their edges as (c, i).
   template <class OutputIteratorBoundaryFacets, class OutputIteratorCells, class OutputIteratorInternalFacets>
   Triple<OutputIteratorBoundaryFacets, OutputIteratorCells, OutputIteratorInternalFacets>
   find_conflicts(const Point& p, Cell_handle c, OutputIteratorBoundaryFacets bfit, OutputIteratorCells cit,
                  OutputIteratorInternalFacets ifit, bool* could_lock_zone = nullptr) const
   {
-    CGAL_precondition(dimension() == 3);
+    CGAL_precondition(dimension() >= 2);
     if(could_lock_zone) *could_lock_zone = true;
+    if(dimension() == 2) {
+      std::vector<Reference_facet> boundary, internal;
+      std::vector<Reference_cell> cells;
+      lower().delaunay().find_conflicts(to_reference(p), to_reference(c), std::back_inserter(boundary),
+                                        std::back_inserter(cells), std::back_inserter(internal));
+      for(const Reference_facet& f : boundary) *bfit++ = from_reference(f);
+      for(Reference_cell x : cells) *cit++ = from_reference(x);
+      for(const Reference_facet& f : internal) *ifit++ = from_reference(f);
+      return make_triple(bfit, cit, ifit);
+    }
     const double q[3] = {p.x(), p.y(), p.z()};
     Fast_Delaunay_triangulation_3_internal::Conflict_zone zone;
     Fast_Delaunay_triangulation_3_internal::find_conflict_zone(
@@ -626,10 +659,18 @@ public:
   }
   // The vertices of the boundary facets of the conflict zone, each once, in
   // increasing handle order (the infinite vertex first when on the boundary);
-  // CGAL writes the same set in its own handle order.
+  // CGAL writes the same set in its own handle order.  In dimension 2,
+  // CGAL's answer (the same set, in CGAL's order for its triangulation).
   template <class OutputIterator>
   OutputIterator vertices_on_conflict_zone_boundary(const Point& p, Cell_handle c, OutputIterator res) const
   {
+    if(dimension() == 2) {
+      std::vector<Reference_vertex> vertices;
+      lower().delaunay().vertices_on_conflict_zone_boundary(to_reference(p), to_reference(c),
+                                                            std::back_inserter(vertices));
+      for(Reference_vertex v : vertices) *res++ = from_reference(v);
+      return res;
+    }
     std::vector<Facet> facets;
     find_conflicts(p, c, std::back_inserter(facets), Emptyset_iterator());
     std::vector<Vertex_handle> vertices;
@@ -788,17 +829,22 @@ public:
   Segment segment(const Edge& e) const { return segment(e.first, e.second, e.third); }
 
   // ---------------------------------------------------------------- point location
-  // Dimension 3 only (precondition): below it the cells are CGAL's
-  // (Lower_dimensions.h) but no walk is written for them.
   // CGAL's semantics: a point on the hull boundary is in a finite cell; one
   // outside is in an infinite cell whose finite facet sees it, li being the
   // infinite vertex.  The cell found may differ from CGAL's when several
-  // qualify (a point on a facet, an edge or a vertex); lt never does.
+  // qualify (a point on a facet, an edge or a vertex); lt never does.  Below
+  // dimension 3, CGAL's locate on CGAL's triangulation of the same vertices
+  // answers (Lower_dimensions.h), from the start cell given.
   Cell_handle locate(const Point& p, Locate_type& lt, int& li, int& lj, Cell_handle start = Cell_handle(),
                      bool* could_lock_zone = nullptr) const
   {
-    CGAL_precondition(dimension() == 3);
     if(could_lock_zone) *could_lock_zone = true;
+    if(dimension() < 3) {
+      typename Lower::Locate_type type;
+      const Reference_cell c = lower().delaunay().locate(to_reference(p), type, li, lj, to_reference(start));
+      lt = static_cast<Locate_type>(type);
+      return from_reference(c);
+    }
     const double q[3] = {p.x(), p.y(), p.z()};
     const Fast_Delaunay_triangulation_3_internal::Location loc =
         Fast_Delaunay_triangulation_3_internal::locate(core_.mesh, start ? start.index() : Tet_id(-1), q);
@@ -822,10 +868,15 @@ public:
   {
     return locate(p, hint == Vertex_handle() ? Cell_handle() : hint->cell(), could_lock_zone);
   }
-  // The exact walk is cheap enough here (filtered predicates): the cell of locate().
+  // The exact walk is cheap enough here (filtered predicates): the cell of
+  // locate().  Below dimension 3, `start`, as CGAL's inexact_locate returns.
   Cell_handle inexact_locate(const Point& p, Cell_handle start = Cell_handle(), int = 2500,
                              bool* could_lock_zone = nullptr) const
   {
+    if(dimension() < 3) {
+      if(could_lock_zone) *could_lock_zone = true;
+      return start;
+    }
     return locate(p, start, could_lock_zone);
   }
   Bounded_side side_of_cell(const Point& p, Cell_handle c, Locate_type& lt, int& i, int& j) const
@@ -836,6 +887,34 @@ public:
         Fast_Delaunay_triangulation_3_internal::side_of_cell(traits_, core_.mesh, c.index(), p, type, i, j);
     lt = static_cast<Locate_type>(type);
     return side;
+  }
+  // Dimension 2: p against triangle (c, 3), as CGAL (lt, li, lj about c).
+  Bounded_side side_of_facet(const Point& p, Cell_handle c, Locate_type& lt, int& li, int& lj) const
+  {
+    CGAL_precondition(dimension() == 2);
+    typename Lower::Locate_type type = unset_locate_type();
+    const Bounded_side side = lower().delaunay().side_of_facet(to_reference(p), to_reference(c), type, li, lj);
+    if(type != unset_locate_type()) lt = static_cast<Locate_type>(type);
+    return side;
+  }
+  Bounded_side side_of_facet(const Point& p, const Facet& f, Locate_type& lt, int& li, int& lj) const
+  {
+    CGAL_precondition(f.second == 3);
+    return side_of_facet(p, f.first, lt, li, lj);
+  }
+  // Dimension 1: p against segment (c, 0, 1), as CGAL.
+  Bounded_side side_of_edge(const Point& p, Cell_handle c, Locate_type& lt, int& li) const
+  {
+    CGAL_precondition(dimension() == 1);
+    typename Lower::Locate_type type = unset_locate_type();
+    const Bounded_side side = lower().delaunay().side_of_edge(to_reference(p), to_reference(c), type, li);
+    if(type != unset_locate_type()) lt = static_cast<Locate_type>(type);
+    return side;
+  }
+  Bounded_side side_of_edge(const Point& p, const Edge& e, Locate_type& lt, int& li) const
+  {
+    CGAL_precondition(e.second == 0 && e.third == 1);
+    return side_of_edge(p, e.first, lt, li);
   }
   Bounded_side side_of_sphere(Cell_handle c, const Point& p, bool perturb = false) const
   {
@@ -850,7 +929,6 @@ public:
   }
   bool is_vertex(const Point& p, Vertex_handle& v) const
   {
-    if(dimension() < 3) return false;
     Locate_type lt;
     int li, lj;
     const Cell_handle c = locate(p, lt, li, lj);
@@ -867,27 +945,35 @@ public:
     return dimension() == 3 && c.owner() == this && c.index() < core_.mesh.number_of_slots() &&
            core_.mesh.is_live(c.index());
   }
-  // Below dimension 3 these scan all cells (lower dimensions are a corner
-  // case).  Like CGAL 5.5, which looks among the cells around u and finds
-  // none below dimension 2, is_edge() is false in dimension 1.
+  // Below dimension 3 CGAL's triangulation answers (CGAL 5.5 looks among
+  // the cells around u, and finds none below dimension 2: is_edge() is
+  // false in dimension 1).
   bool is_edge(Vertex_handle u, Vertex_handle v, Cell_handle& c, int& i, int& j) const
   {
+    if(dimension() < 3) {
+      typename Lower::Reference_cell rc;
+      if(!lower().delaunay().is_edge(to_reference(u), to_reference(v), rc, i, j)) return false;
+      c = from_reference(rc);
+      return true;
+    }
     int index[2];
     const Vertex_handle others[1] = {v};
-    if(dimension() < 2 || u == v) return false;
-    if(dimension() < 3 ? !lower_dimensional_cell_with(u, others, c, index)
-                       : !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
-      return false;
+    if(u == v || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index)) return false;
     i = index[0]; j = index[1];
     return true;
   }
   bool is_facet(Vertex_handle u, Vertex_handle v, Vertex_handle w, Cell_handle& c, int& i, int& j, int& k) const
   {
+    if(dimension() < 3) {
+      typename Lower::Reference_cell rc;
+      if(!lower().delaunay().is_facet(to_reference(u), to_reference(v), to_reference(w), rc, i, j, k)) return false;
+      c = from_reference(rc);
+      return true;
+    }
     int index[3];
     const Vertex_handle others[2] = {v, w};
-    if(dimension() < 2 || u == v || u == w || v == w) return false;
-    if(dimension() < 3 ? !lower_dimensional_cell_with(u, others, c, index)
-                       : !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
+    if(u == v || u == w || v == w ||
+       !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index))
       return false;
     i = index[0]; j = index[1]; k = index[2];
     return true;
@@ -988,14 +1074,16 @@ public:
   // line the segment decides (inside strictly between its ends, boundary at
   // an end).  (CGAL 5.5's code takes the finite-facet branch for those
   // facets and the other for the finite facet of an infinite cell; finite
-  // facets agree with it exactly.)
+  // facets agree with it exactly.)  In dimension 2, CGAL's answer for
+  // triangle (c, 3).
   Bounded_side side_of_circle(const Facet& f, const Point& p, bool perturb = false) const
   {
     return side_of_circle(f.first, f.second, p, perturb);
   }
   Bounded_side side_of_circle(Cell_handle c, int i, const Point& p, bool perturb = false) const
   {
-    CGAL_precondition(dimension() == 3 && i >= 0 && i < 4);
+    CGAL_precondition(dimension() >= 2 && i >= 0 && i < 4);
+    if(dimension() == 2) return lower().delaunay().side_of_circle(to_reference(c), i, to_reference(p), perturb);
     if(!is_infinite(c) || i == 3) {
       const int i0 = i > 0 ? 0 : 1, i1 = i > 1 ? 1 : 2, i2 = i > 2 ? 2 : 3;
       const Point &a = point(c, i0), &b = point(c, i1), &d = point(c, i2);
@@ -1046,39 +1134,56 @@ public:
     }
   }
 
-  // ---------------------------------------------------------------- adjacency (dimension 3)
+  // ---------------------------------------------------------------- adjacency
+  // Below dimension 3, CGAL's triangulation answers, in its order (CGAL
+  // defines incident cells and facets from dimension 2, edges from
+  // dimension 1; below that they are empty).
   template <class OutputIterator>
   OutputIterator incident_cells(Vertex_handle v, OutputIterator out) const
   {
+    if(dimension() < 3) return below_dimension_3<Reference_cell>(out, [&](auto to) { lower().delaunay().incident_cells(to_reference(v), to); });
     return cells_around(v, out, false);
   }
   template <class OutputIterator>
   OutputIterator finite_incident_cells(Vertex_handle v, OutputIterator out) const
   {
+    if(dimension() < 3) return below_dimension_3<Reference_cell>(out, [&](auto to) { lower().delaunay().finite_incident_cells(to_reference(v), to); });
     return cells_around(v, out, true);
   }
   template <class OutputIterator>
-  OutputIterator incident_facets(Vertex_handle v, OutputIterator out) const { return facets_around(v, out, false); }
+  OutputIterator incident_facets(Vertex_handle v, OutputIterator out) const
+  {
+    if(dimension() < 3) return below_dimension_3<Reference_facet>(out, [&](auto to) { lower().delaunay().incident_facets(to_reference(v), to); });
+    return facets_around(v, out, false);
+  }
   template <class OutputIterator>
   OutputIterator finite_incident_facets(Vertex_handle v, OutputIterator out) const
   {
+    if(dimension() < 3) return below_dimension_3<Reference_facet>(out, [&](auto to) { lower().delaunay().finite_incident_facets(to_reference(v), to); });
     return facets_around(v, out, true);
   }
   template <class OutputIterator>
-  OutputIterator incident_edges(Vertex_handle v, OutputIterator out) const { return edges_around(v, out, false); }
+  OutputIterator incident_edges(Vertex_handle v, OutputIterator out) const
+  {
+    if(dimension() < 3) return below_dimension_3<Reference_edge>(out, [&](auto to) { lower().delaunay().incident_edges(to_reference(v), to); });
+    return edges_around(v, out, false);
+  }
   template <class OutputIterator>
   OutputIterator finite_incident_edges(Vertex_handle v, OutputIterator out) const
   {
+    if(dimension() < 3) return below_dimension_3<Reference_edge>(out, [&](auto to) { lower().delaunay().finite_incident_edges(to_reference(v), to); });
     return edges_around(v, out, true);
   }
   template <class OutputIterator>
   OutputIterator adjacent_vertices(Vertex_handle v, OutputIterator out) const
   {
+    if(dimension() < 3) return below_dimension_3<Reference_vertex>(out, [&](auto to) { lower().delaunay().adjacent_vertices(to_reference(v), to); });
     return vertices_around(v, out, false);
   }
   template <class OutputIterator>
   OutputIterator finite_adjacent_vertices(Vertex_handle v, OutputIterator out) const
   {
+    if(dimension() < 3) return below_dimension_3<Reference_vertex>(out, [&](auto to) { lower().delaunay().finite_adjacent_vertices(to_reference(v), to); });
     return vertices_around(v, out, true);
   }
   template <class OutputIterator>
@@ -1091,6 +1196,7 @@ public:
   // Adjacent vertices, the infinite one included (CGAL's count).
   size_type degree(Vertex_handle v) const
   {
+    if(dimension() < 3) return lower().delaunay().degree(to_reference(v));
     std::size_t n = 0;
     vertices_around(v, Fast_Delaunay_triangulation_3_internal::Counting_output{&n}, false);
     return n;
@@ -1279,10 +1385,9 @@ public:
   Record& user_record(const Cell*, Tet_id c) const { return user_cells_.at(this, core_.mesh, c); }
   Cell_handle incident_cell_of(Vertex_id v) const
   {
-    if(dimension() < 0) return Cell_handle();
+    if(dimension() < 3) return from_reference(lower().vertex(v)->cell());
     if(incident_cells_.empty()) build_incident_cells();
-    if(v == Fast_Delaunay_triangulation_3_internal::ghost_vertex)
-      return dimension() == 3 ? infinite_cell() : Cell_handle(this, incident_cells_.back());
+    if(v == Fast_Delaunay_triangulation_3_internal::ghost_vertex) return infinite_cell();
     return Cell_handle(this, incident_cells_[v]);
   }
   // Below dimension 3 the infinite vertex may be in any slot up to the dimension.
@@ -1341,11 +1446,12 @@ private:
 #endif
   }
 
-  // Dimension 3: the kernel's insertion from `start`; below, insert(p).
+  // Dimension 3: the kernel's insertion from `start`; below, CGAL's from
+  // the same start (`ball`: the cells of the vertex, in CGAL's order).
   Vertex_handle insert_from(const Point& p, Cell_handle start, std::vector<Tet_id>& ball)
   {
     ball.clear();
-    if(dimension() < 3) return insert(p);
+    if(dimension() < 3) return insert_below_dimension_3(p, start, nullptr, Cell_handle(), 0, 0, ball);
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
     const Vertex_id v = core_.insert_one_from(xyz, start ? start.index() : Tet_id(-1), ball);
@@ -1367,6 +1473,70 @@ private:
         if(w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[w] = t;
       }
   }
+  // As CGAL's insert(p, start) (lt null) or insert(p, *lt, c, li, lj); a
+  // point that lifts the dimension goes to the 3D build.  `around`: the
+  // cells of the vertex in the order of CGAL's insert_and_give_new_cells
+  // (empty after the lift).
+  Vertex_handle insert_below_dimension_3(const Point& p, Cell_handle start, const Locate_type* lt, Cell_handle c,
+                                         int li, int lj, std::vector<Tet_id>& around)
+  {
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    incident_cells_.clear();
+    core_.partitions = 1;
+    typename Lower::Location where;
+    if(lt) {
+      where.type = static_cast<typename Lower::Locate_type>(*lt);
+      where.cell = to_reference(c);
+      where.li = li;
+      where.lj = lj;
+    }
+    const Vertex_id v = core_.insert_one_below_dimension_3(xyz, start ? start.index() : Tet_id(-1),
+                                                           lt ? &where : nullptr, around);
+    vertices_added();
+    return Vertex_handle(this, v);
+  }
+
+  // Handles of CGAL's triangulation below dimension 3 (Lower_dimensions.h)
+  // and ours, both ways.  A CGAL cell without a slot is the cell of the
+  // empty triangulation, which has no copy: a null handle.
+  const Lower& lower() const { return core_.lower; }
+  // CGAL's side_of_facet / side_of_edge leave lt alone outside the simplex:
+  // a value no enumerator has (but in the enum's range, 0..7) tells, so
+  // that ours leave the caller's lt alone too.
+  static typename Lower::Locate_type unset_locate_type() { return static_cast<typename Lower::Locate_type>(7); }
+  Cell_handle from_reference(Reference_cell c) const
+  {
+    if(c == Reference_cell() || Lower::slot(c) == Fast_Delaunay_triangulation_3_internal::lower_dimensions_detail::Slot::none)
+      return Cell_handle();
+    return Cell_handle(this, Lower::slot(c));
+  }
+  Vertex_handle from_reference(Reference_vertex v) const
+  {
+    return v == Reference_vertex() ? Vertex_handle() : Vertex_handle(this, Lower::id(v));
+  }
+  Facet from_reference(const Reference_facet& f) const { return Facet(from_reference(f.first), f.second); }
+  Edge from_reference(const Reference_edge& e) const { return Edge(from_reference(e.first), e.second, e.third); }
+  Reference_cell to_reference(Cell_handle c) const { return c ? lower().cell(c.index()) : Reference_cell(); }
+  Reference_vertex to_reference(Vertex_handle v) const
+  {
+    return v == Vertex_handle() ? Reference_vertex() : lower().vertex(v.index());
+  }
+  static typename Lower::Reference_point to_reference(const Point& p)
+  {
+    return typename Lower::Reference_point(p.x(), p.y(), p.z());
+  }
+  // Runs `query` with an output iterator of CGAL's elements of type
+  // Reference, and writes them to `out` as our handles, in CGAL's order.
+  template <class Reference, class OutputIterator, class Query>
+  OutputIterator below_dimension_3(OutputIterator out, const Query& query) const
+  {
+    std::vector<Reference> found;
+    query(std::back_inserter(found));
+    for(const Reference& x : found) *out++ = from_reference(x);
+    return out;
+  }
+
   Segment_traverser_cell_handles cell_handles_of(Segment_cell_iterator begin) const
   {
     typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<Segment_cell_iterator, Cell_handle> Handles;
@@ -1380,12 +1550,15 @@ private:
   }
   Cell_handle hint_cell(Vertex_handle hint) const
   {
-    return hint == Vertex_handle() || dimension() < 3 ? Cell_handle() : hint->cell();
+    return hint == Vertex_handle() ? Cell_handle() : hint->cell();
   }
   template <class OutputItCells>
   void give_new_cells(Vertex_handle v, const std::vector<Tet_id>& ball, OutputItCells& fit) const
   {
-    if(dimension() < 3) return;
+    if(dimension() < 3) {
+      for(Tet_id t : ball) *fit++ = Cell_handle(this, t);
+      return;
+    }
     if(ball.empty()) {
       fit = incident_cells(v, fit);
       return;
@@ -1479,44 +1652,19 @@ private:
   std::size_t cell_slots() const { return dimension() < 3 ? 0 : core_.mesh.number_of_slots(); }
   Vertex_id vertex_count() const { return static_cast<Vertex_id>(number_of_vertices()); }
 
-  // One cell per finite vertex, then one for the infinite vertex (read below
-  // dimension 3 only).
+  // One tetrahedron per finite vertex (dimension 3; below it CGAL's
+  // triangulation knows v->cell()).
   void build_incident_cells() const
   {
     const Flat_storage& m = core_.mesh;
-    const int last = std::max(dimension(), 0);
-    incident_cells_.assign(number_of_vertices() + 1, Tet_id(-1));
+    incident_cells_.assign(number_of_vertices(), Tet_id(-1));
     for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
       if(!m.is_live(t)) continue;
-      for(int i = 0; i <= last; ++i) {
+      for(int i = 0; i < 4; ++i) {
         const Vertex_id v = m.vertex(t, i);
-        incident_cells_[v == Fast_Delaunay_triangulation_3_internal::ghost_vertex ? number_of_vertices() : v] = t;
+        if(v != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[v] = t;
       }
     }
-  }
-
-  // The cell of dimension 1 or 2 that has u and others (by linear scan),
-  // with their indices in it.
-  template <std::size_t N>
-  bool lower_dimensional_cell_with(Vertex_handle u, const Vertex_handle (&others)[N], Cell_handle& c,
-                                   int (&index)[N + 1]) const
-  {
-    const Flat_storage& m = core_.mesh;
-    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
-      if(!m.is_live(t)) continue;
-      bool all = true;
-      for(std::size_t k = 0; k <= N && all; ++k) {
-        const Vertex_id id = k == 0 ? u.index() : others[k - 1].index();
-        index[k] = -1;
-        for(int i = 0; i <= dimension(); ++i)
-          if(m.vertex(t, i) == id) index[k] = i;
-        all = index[k] >= 0;
-      }
-      if(!all) continue;
-      c = Cell_handle(this, t);
-      return true;
-    }
-    return false;
   }
 
   template <class InputIterator>

@@ -203,7 +203,8 @@ enum class Overload { cell, vertex, location, new_cells_cell, new_cells_vertex, 
 
 // Inserts the points one at a time with one hint overload, the hint being
 // the previous answer (the idiom of CGAL's examples), a far cell, the
-// infinite cell or the infinite vertex in turn.
+// infinite cell or the infinite vertex in turn.  The first points, below
+// dimension 3, take the same overloads (locate's answer included).
 template <class Tr>
 void insert_one_by_one(Tr& tr, const std::vector<Point>& points, Overload how)
 {
@@ -227,20 +228,19 @@ void insert_one_by_one(Tr& tr, const std::vector<Point>& points, Overload how)
     typename Tr::Locate_type lt = Tr::OUTSIDE_AFFINE_HULL;
     int li = -1, lj = -1;
     Cell_handle located;
-    if(tr.dimension() == 3) located = tr.locate(p, lt, li, lj, cell_hint);
+    located = tr.locate(p, lt, li, lj, cell_hint);
     switch(how) {
     case Overload::cell: v = tr.insert(p, cell_hint); break;
     case Overload::vertex: v = tr.insert(p, vertex_hint); break;
     case Overload::location:
-      v = tr.dimension() == 3 ? tr.insert(p, lt, located, li, lj) : tr.insert(p);
+      v = tr.insert(p, lt, located, li, lj);
       break;
     case Overload::new_cells_cell: v = tr.insert_and_give_new_cells(p, std::back_inserter(new_cells), cell_hint); break;
     case Overload::new_cells_vertex:
       v = tr.insert_and_give_new_cells(p, std::back_inserter(new_cells), vertex_hint);
       break;
     case Overload::new_cells_location:
-      v = tr.dimension() == 3 ? tr.insert_and_give_new_cells(p, lt, located, li, lj, std::back_inserter(new_cells))
-                              : tr.insert_and_give_new_cells(p, std::back_inserter(new_cells));
+      v = tr.insert_and_give_new_cells(p, lt, located, li, lj, std::back_inserter(new_cells));
       break;
     }
     EXPECT_TRUE(v->point() == p);

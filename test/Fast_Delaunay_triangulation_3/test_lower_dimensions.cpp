@@ -23,25 +23,6 @@ typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
 namespace {
 
-// The cells of a triangulation of dimension 0, 1 or 2, reached as CGAL users
-// reach them: triangles through the facets, segments through the edges, the
-// two point cells through a vertex and its neighbour.
-template <class Tr>
-std::vector<typename Tr::Cell_handle> lower_dimensional_cells(const Tr& tr)
-{
-  std::vector<typename Tr::Cell_handle> cells;
-  if(tr.dimension() == 2)
-    for(auto f = tr.all_facets_begin(); f != tr.all_facets_end(); ++f) cells.push_back(f->first);
-  if(tr.dimension() == 1)
-    for(auto e = tr.all_edges_begin(); e != tr.all_edges_end(); ++e) cells.push_back(e->first);
-  if(tr.dimension() == 0) {
-    const typename Tr::Cell_handle c = tr.finite_vertices_begin()->cell();
-    cells.push_back(c);
-    cells.push_back(c->neighbor(0));
-  }
-  return cells;
-}
-
 // CGAL's conventions for cells below dimension 3, checked through handles.
 template <class Tr>
 void expect_lower_dimensional_conventions(const Tr& tr)
@@ -426,6 +407,23 @@ TEST(Validity, DetectsBrokenLowerDimensionalCells)
     std::string why;
     EXPECT_FALSE(broken.is_valid(&why));
     EXPECT_FALSE(why.empty());
+  }
+  {
+    // A finite triangle rotated (vertices and neighbours together): still a
+    // valid triangulation, but no longer the copy of CGAL's triangulation
+    // that answers the queries.
+    Triangulation_core broken = core;
+    Flat_storage& m = broken.mesh;
+    const Tet_record r = m.tets[finite];
+    for(int i = 0; i < 3; ++i) {
+      m.tets[finite].v[i] = r.v[(i + 1) % 3];
+      m.tets[finite].n[i] = r.n[(i + 1) % 3];
+    }
+    for(int i = 0; i < 3; ++i) m.neighbor_code(m.tets[finite].n[i]) = facet_code(finite, i);
+    EXPECT_TRUE(lower_dimensional_cells_are_valid(m, 2, nullptr));
+    std::string why;
+    EXPECT_FALSE(broken.is_valid(&why));
+    EXPECT_NE(why.find("CGAL"), std::string::npos) << why;
   }
   {
     std::vector<double> line = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3};

@@ -251,6 +251,25 @@ void expect_same_lower_dimensional_faces(const Tr& tr, const Cgal_dt& cgal)
   EXPECT_TRUE(finite_edge_keys(tr) == finite_edge_keys(cgal)) << "different edges";
 }
 
+// The cells of a triangulation of dimension 0, 1 or 2, reached as CGAL users
+// reach them: triangles through the facets, segments through the edges, the
+// two point cells through a vertex and its neighbour.
+template <class Tr>
+std::vector<typename Tr::Cell_handle> lower_dimensional_cells(const Tr& tr)
+{
+  std::vector<typename Tr::Cell_handle> cells;
+  if(tr.dimension() == 2)
+    for(auto f = tr.all_facets_begin(); f != tr.all_facets_end(); ++f) cells.push_back(f->first);
+  if(tr.dimension() == 1)
+    for(auto e = tr.all_edges_begin(); e != tr.all_edges_end(); ++e) cells.push_back(e->first);
+  if(tr.dimension() == 0) {
+    const typename Tr::Cell_handle c = tr.finite_vertices_begin()->cell();
+    cells.push_back(c);
+    cells.push_back(c->neighbor(0));
+  }
+  return cells;
+}
+
 // `tr` is the triangulation CGAL builds from the same points: same dimension
 // and vertices, and the same cells (in dimension 3 also checked
 // independently) or lower-dimensional faces.

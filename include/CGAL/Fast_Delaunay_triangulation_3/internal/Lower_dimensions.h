@@ -4,10 +4,15 @@
 // Triangulations of dimension 0, 1 and 2 (one point, collinear points,
 // coplanar points) in the flat arrays, with the cells CGAL's
 // Delaunay_triangulation_3 has there.  The paper's engine is 3D only; these
-// inputs are a corner case, so their triangulation is delegated to CGAL
-// (whose 2D Delaunay triangulation under symbolic perturbation is unique) and
-// its cells are copied into Tet_records, slot for slot and neighbour for
-// neighbour, so handles and iterators read them like tetrahedra:
+// inputs are a corner case, so while the dimension is below 3 a CGAL
+// Delaunay_triangulation_3 of the same vertices is kept beside the flat
+// arrays and updated by every insertion.  Its cells are copied into
+// Tet_records, vertex order and neighbours included, so handles and
+// iterators read them like tetrahedra, and the queries that CGAL defines
+// below dimension 3 (point location, side_of_*, incident and adjacent
+// elements, conflict zones) are answered by that triangulation, handles
+// mapped both ways: a CGAL cell knows its slot (cell info), a slot its CGAL
+// cell, a CGAL vertex its id (vertex info), an id its CGAL vertex.
 //
 //   dimension 0:  2 cells (v) and (infinite), neighbours of each other;
 //   dimension 1:  segments (v0, v1); neighbour i is opposite vertex i; the
@@ -22,8 +27,8 @@
 // infinite vertex may sit in any slot of a lower-dimensional cell, as in
 // CGAL, so Flat_storage::is_ghost (slot 3) is meaningless below dimension 3;
 // `ghost_tets` still counts the cells that have it.  Nothing here runs in
-// dimension 3: lifting to 3D rebuilds the arrays from scratch
-// (Triangulation_core::build_or_stay_low_dimensional).
+// dimension 3: lifting to 3D drops the CGAL triangulation and rebuilds the
+// arrays from scratch (Triangulation_core::lift_to_dimension_3).
 
 #ifndef CGAL_FDT3_INTERNAL_LOWER_DIMENSIONS_H
 #define CGAL_FDT3_INTERNAL_LOWER_DIMENSIONS_H
@@ -37,8 +42,12 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_data_structure_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/iterator.h>
 
 #include <algorithm>
+#include <iterator>
+#include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,9 +57,16 @@ namespace Fast_Delaunay_triangulation_3_internal {
 
 namespace lower_dimensions_detail {
 typedef Exact_predicates_inexact_constructions_kernel Epick;
-// Vertex info: our vertex id; cell info: the slot the cell is copied to.
+// The slot a CGAL cell is copied to.  Cells that CGAL creates start without
+// one (a default member initialiser: CGAL's info base leaves a plain integer
+// uninitialised), which is how the copy tells new cells from old ones.
+struct Slot
+{
+  static constexpr Tet_id none = std::numeric_limits<Tet_id>::max();
+  Tet_id id = none;
+};
 typedef Triangulation_vertex_base_with_info_3<Vertex_id, Epick> Vb;
-typedef Triangulation_cell_base_with_info_3<Tet_id, Epick, Delaunay_triangulation_cell_base_3<Epick>> Cb;
+typedef Triangulation_cell_base_with_info_3<Slot, Epick, Delaunay_triangulation_cell_base_3<Epick>> Cb;
 typedef Delaunay_triangulation_3<Epick, Triangulation_data_structure_3<Vb, Cb>> Reference_delaunay;
 
 inline bool has_vertex(const Tet_record& r, int dimension, Vertex_id v)
@@ -59,48 +75,316 @@ inline bool has_vertex(const Tet_record& r, int dimension, Vertex_id v)
 }
 } // namespace lower_dimensions_detail
 
-// Replaces the cells of `mesh` by the triangulation of its vertices, which
-// are distinct and span exactly `dimension` (0, 1 or 2).
-inline void build_lower_dimensional_cells(Flat_storage& mesh, int dimension)
+// The CGAL triangulation of the vertices while they span less than 3D, and
+// the copy of its cells in the flat arrays.  Value semantics: a copy copies
+// CGAL's triangulation (infos included) and re-indexes the handles.
+class Lower_dimensional_triangulation
 {
-  using namespace lower_dimensions_detail;
-  CGAL_precondition(dimension >= 0 && dimension <= 2);
-  std::vector<std::pair<Epick::Point_3, Vertex_id>> points;
-  points.reserve(mesh.vertices.size());
-  for(Vertex_id v = 0; v < mesh.vertices.size(); ++v) {
-    const double* p = mesh.point(v);
-    points.emplace_back(Epick::Point_3(p[0], p[1], p[2]), v);
+public:
+  typedef lower_dimensions_detail::Reference_delaunay Delaunay;
+  typedef Delaunay::Cell_handle Reference_cell;
+  typedef Delaunay::Vertex_handle Reference_vertex;
+  typedef Delaunay::Locate_type Locate_type;
+  typedef lower_dimensions_detail::Epick::Point_3 Reference_point;
+
+  // Where a point is, as CGAL's locate() says it.
+  struct Location
+  {
+    Locate_type type = Delaunay::OUTSIDE_AFFINE_HULL;
+    Reference_cell cell;
+    int li = 0, lj = 0;
+  };
+
+  Lower_dimensional_triangulation() = default;
+  Lower_dimensional_triangulation(const Lower_dimensional_triangulation& other)
+  {
+    if(!other.active()) return;
+    delaunay_.reset(new Delaunay(*other.delaunay_));
+    index_handles();
   }
-  Reference_delaunay reference(points.begin(), points.end());
-  CGAL_assertion(reference.dimension() == dimension && reference.number_of_vertices() == points.size());
-  reference.infinite_vertex()->info() = ghost_vertex;
+  Lower_dimensional_triangulation& operator=(const Lower_dimensional_triangulation& other)
+  {
+    if(this != &other) {
+      Lower_dimensional_triangulation copy(other);
+      *this = std::move(copy);
+    }
+    return *this;
+  }
+  // Moving keeps CGAL's cells where they are: the handles stay valid.
+  Lower_dimensional_triangulation(Lower_dimensional_triangulation&&) noexcept = default;
+  Lower_dimensional_triangulation& operator=(Lower_dimensional_triangulation&&) noexcept = default;
 
-  auto& tds = reference.tds();
-  Tet_id count = 0;
-  for(auto c = tds.raw_cells_begin(); c != tds.raw_cells_end(); ++c) c->info() = count++;
+  bool active() const { return delaunay_ != nullptr; }
+  // An empty triangulation, beside flat arrays that hold no cell.
+  void start()
+  {
+    delaunay_.reset(new Delaunay);
+    delaunay_->infinite_vertex()->info() = ghost_vertex;
+    cells_.clear();
+    vertices_.clear();
+  }
+  void stop()
+  {
+    delaunay_.reset();
+    std::vector<Reference_cell>().swap(cells_);
+    std::vector<Reference_vertex>().swap(vertices_);
+  }
 
-  mesh.free_tets.clear();
-  mesh.tets.clear();
-  mesh.tet_sub_determinants.clear();
-  mesh.resize_tets(count);
-  mesh.live_tets = count;
-  mesh.ghost_tets = 0;
-  for(auto c = tds.raw_cells_begin(); c != tds.raw_cells_end(); ++c) {
-    const Tet_id t = c->info();
-    Tet_record& r = mesh.tets[t];
+  const Delaunay& delaunay() const { return *delaunay_; }
+  Reference_cell cell(Tet_id slot) const { return cells_[slot]; }
+  static Tet_id slot(Reference_cell c) { return c->info().id; }
+  Reference_vertex vertex(Vertex_id v) const
+  {
+    return v == ghost_vertex ? delaunay_->infinite_vertex() : vertices_[v];
+  }
+  static Vertex_id id(Reference_vertex v) { return v->info(); }
+  static Reference_point point(const Flat_storage& m, Vertex_id v)
+  {
+    const double* p = m.point(v);
+    return Reference_point(p[0], p[1], p[2]);
+  }
+
+  Location locate(const Reference_point& p, Reference_cell start) const
+  {
+    Location where;
+    where.cell = delaunay_->locate(p, where.type, where.li, where.lj, start);
+    return where;
+  }
+
+  // Vertex v of m (record written, id final: the next id) inserted as
+  // CGAL's insert(p, start).  Returns v, or the older vertex at the same
+  // point (then nothing changed and the caller drops v's record).  The point
+  // must not lift the dimension to 3.  `around` receives the slots of the
+  // cells of the returned vertex in the order of CGAL's
+  // insert_and_give_new_cells.
+  Vertex_id insert(Flat_storage& m, Vertex_id v, Reference_cell start, std::vector<Tet_id>* around)
+  {
+    return insert(m, v, locate(point(m, v), start), around);
+  }
+  // As CGAL's insert(p, lt, c, li, lj), `where` being locate(p)'s answer.
+  Vertex_id insert(Flat_storage& m, Vertex_id v, const Location& where, std::vector<Tet_id>* around)
+  {
+    const Reference_point p = point(m, v);
+    const int dimension_before = delaunay_->dimension();
+    const std::size_t vertices_before = delaunay_->number_of_vertices();
+    // In dimension 2 CGAL replaces the cells in conflict with p; below, it
+    // splits a segment in place (the segment keeps its slot) or raises the
+    // dimension (every cell is re-copied).
+    std::vector<Reference_cell> deleted;
+    if(dimension_before == 2 && where.type != Delaunay::VERTEX && where.type != Delaunay::OUTSIDE_AFFINE_HULL)
+      delaunay_->find_conflicts(p, where.cell, Emptyset_iterator(), std::back_inserter(deleted));
+    const Reference_vertex r = delaunay_->insert(p, where.type, where.cell, where.li, where.lj);
+    if(delaunay_->number_of_vertices() != vertices_before) {
+      CGAL_assertion(v == vertices_.size());
+      r->info() = v;
+      vertices_.push_back(r);
+      if(delaunay_->dimension() != dimension_before) copy_all_cells(m);
+      else copy_new_cells(m, deleted, r);
+    }
+    if(around) slots_around(r, *around);
+    return id(r);
+  }
+
+  // CGAL's insert_in_hole in dimension 2: the cells of `hole` (slots),
+  // forming a hole star-shaped from the point of v, replaced by v joined to
+  // the hole's boundary edges; (begin, i) is a boundary edge of the hole.
+  void insert_in_hole(Flat_storage& m, Vertex_id v, const std::vector<Tet_id>& hole, Tet_id begin, int i,
+                      std::vector<Tet_id>* around)
+  {
+    CGAL_precondition(delaunay_->dimension() == 2 && v == vertices_.size());
+    std::vector<Reference_cell> deleted;
+    for(Tet_id t : hole) deleted.push_back(cells_[t]);
+    const Reference_vertex r =
+        delaunay_->insert_in_hole(point(m, v), deleted.begin(), deleted.end(), cells_[begin], i);
+    r->info() = v;
+    vertices_.push_back(r);
+    copy_new_cells(m, deleted, r);
+    if(around) slots_around(r, *around);
+  }
+
+  // The triangulation of the vertices of m, which are distinct and span
+  // less than 3D (a file read by Triangulation_io.h), in the order of their ids.
+  void rebuild(Flat_storage& m)
+  {
+    start();
+    m.tets.clear();
+    m.free_tets.clear();
+    m.tet_sub_determinants.clear();
+    m.live_tets = m.ghost_tets = 0;
+    Reference_cell hint;
+    for(Vertex_id v = 0; v < m.vertices.size(); ++v) {
+      const Vertex_id inserted = insert(m, v, hint, nullptr);
+      CGAL_assertion(inserted == v);
+      hint = vertex(inserted)->cell();
+    }
+  }
+
+  // Whether the flat arrays hold exactly CGAL's cells: one live slot per
+  // CGAL cell, naming it back, with its vertices and neighbours, and the
+  // vertex ids of CGAL's vertices.  Writes the first difference to `why`.
+  bool is_copied_into(const Flat_storage& m, std::string* why) const
+  {
+    auto fail = [why](const std::string& message) {
+      if(why) *why = message;
+      return false;
+    };
+    if(!active()) return fail("no CGAL triangulation below dimension 3");
+    if(vertices_.size() != m.vertices.size()) return fail("CGAL's triangulation has another number of vertices");
+    for(Vertex_id v = 0; v < vertices_.size(); ++v) {
+      const double* p = m.point(v);
+      if(id(vertices_[v]) != v || vertices_[v]->point() != Reference_point(p[0], p[1], p[2]))
+        return fail("vertex " + std::to_string(v) + " is not CGAL's vertex of that id");
+    }
+    const int dimension = delaunay_->dimension();
+    if(dimension < 0) return m.live_tets == 0 ? true : fail("cells in dimension -1");
+    std::size_t cells = 0;
+    for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c, ++cells) {
+      const Tet_id t = slot(c);
+      const std::string at = "slot " + std::to_string(t) + ": ";
+      if(t >= m.number_of_slots() || !m.is_live(t) || t >= cells_.size() || cells_[t] != Reference_cell(c))
+        return fail("a CGAL cell has no live slot naming it");
+      for(int i = 0; i <= dimension; ++i) {
+        const Reference_cell n = c->neighbor(i);
+        if(m.vertex(t, i) != id(c->vertex(i))) return fail(at + "not CGAL's vertex " + std::to_string(i));
+        if(m.neighbor_code(t, i) != facet_code(slot(n), n->index(c)))
+          return fail(at + "not CGAL's neighbour " + std::to_string(i));
+      }
+    }
+    return cells == m.live_tets ? true : fail("live slots that are no CGAL cell");
+  }
+
+private:
+  // Handles of a copied triangulation, from its infos.
+  void index_handles()
+  {
+    cells_.clear();
+    vertices_.assign(delaunay_->number_of_vertices(), Reference_vertex());
+    for(auto v = delaunay_->finite_vertices_begin(); v != delaunay_->finite_vertices_end(); ++v)
+      vertices_[v->info()] = v;
+    if(delaunay_->dimension() < 0) return;
+    for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c) {
+      if(c->info().id >= cells_.size()) cells_.resize(c->info().id + 1);
+      cells_[c->info().id] = c;
+    }
+  }
+
+  // The cells of r in CGAL's order of insert_and_give_new_cells.
+  void cells_around(Reference_vertex r, std::vector<Reference_cell>& cells) const
+  {
+    cells.clear();
+    const Reference_cell first = r->cell();
+    switch(delaunay_->dimension()) {
+    case 2:
+      for(Reference_cell c = first;;) {
+        cells.push_back(c);
+        c = c->neighbor((c->index(r) + 1) % 3);
+        if(c == first) break;
+      }
+      break;
+    case 1:
+      cells.push_back(first);
+      cells.push_back(first->neighbor(1 - first->index(r)));
+      break;
+    default: cells.push_back(first);
+    }
+  }
+  void slots_around(Reference_vertex r, std::vector<Tet_id>& slots) const
+  {
+    std::vector<Reference_cell> cells;
+    cells_around(r, cells);
+    slots.clear();
+    for(Reference_cell c : cells) slots.push_back(slot(c));
+  }
+
+  // After an insertion in the same dimension: the cells of the new vertex r
+  // are new or changed in place, those of `deleted` gone; the neighbours of
+  // r's cells changed their neighbour fields.
+  void copy_new_cells(Flat_storage& m, const std::vector<Reference_cell>& deleted, Reference_vertex r)
+  {
+    std::vector<Reference_cell> changed;
+    cells_around(r, changed);
+    std::vector<Tet_id> freed;
+    for(Reference_cell c : deleted) freed.push_back(slot(c));
+    resynchronise(m, freed, changed);
+  }
+  // After a change of dimension every cell is new or changed.
+  void copy_all_cells(Flat_storage& m)
+  {
+    std::vector<Tet_id> freed;
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t)
+      if(m.is_live(t)) freed.push_back(t);
+    std::vector<Reference_cell> changed;
+    if(delaunay_->dimension() >= 0)
+      for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c)
+        changed.push_back(c);
+    resynchronise(m, freed, changed);
+  }
+
+  // `changed`: the CGAL cells to copy again (new or modified); `released`:
+  // slots whose cells may be gone.  A cell keeps its slot while the slot
+  // still names it (so its cell info survives, as in CGAL); the released
+  // slots that no changed cell keeps are freed, and new cells take free slots.
+  void resynchronise(Flat_storage& m, std::vector<Tet_id>& released, const std::vector<Reference_cell>& changed)
+  {
+    std::vector<Tet_id> kept;
+    std::vector<Reference_cell> fresh;
+    for(Reference_cell c : changed) {
+      const Tet_id t = slot(c);
+      if(t < cells_.size() && cells_[t] == c) kept.push_back(t);
+      else fresh.push_back(c);
+    }
+    std::sort(kept.begin(), kept.end());
+    for(Tet_id t : released)
+      if(!std::binary_search(kept.begin(), kept.end(), t)) free_slot(m, t);
+    for(Reference_cell c : fresh) {
+      const Tet_id t = m.new_tet();
+      Tet_record& r = m.tets[t];
+      std::fill(r.v, r.v + 4, no_vertex);
+      ++m.live_tets;
+      c->info().id = t;
+      if(t >= cells_.size()) cells_.resize(t + 1);
+      cells_[t] = c;
+    }
+    const int dimension = delaunay_->dimension();
+    for(Reference_cell c : changed) {
+      copy_cell(m, c);
+      for(int i = 0; i <= dimension; ++i) copy_cell(m, c->neighbor(i));
+    }
+  }
+
+  void free_slot(Flat_storage& m, Tet_id t)
+  {
+    if(lower_dimensions_detail::has_vertex(m.tets[t], 3, ghost_vertex)) --m.ghost_tets;
+    --m.live_tets;
+    m.mark_free(t);
+    m.free_tets.push_back(t);
+    cells_[t] = Reference_cell();
+  }
+
+  void copy_cell(Flat_storage& m, Reference_cell c) const
+  {
+    using lower_dimensions_detail::has_vertex;
+    const Tet_id t = slot(c);
+    Tet_record& r = m.tets[t];
+    if(has_vertex(r, 3, ghost_vertex)) --m.ghost_tets;
+    const int dimension = delaunay_->dimension();
     for(int i = 0; i < 4; ++i) {
       if(i > dimension) {
         r.v[i] = no_vertex;
         r.n[i] = facet_code(t, i);
         continue;
       }
-      r.v[i] = c->vertex(i)->info();
-      const auto n = c->neighbor(i);
-      r.n[i] = facet_code(n->info(), n->index(c));
+      r.v[i] = id(c->vertex(i));
+      const Reference_cell n = c->neighbor(i);
+      r.n[i] = facet_code(slot(n), n->index(c));
     }
-    if(has_vertex(r, dimension, ghost_vertex)) ++mesh.ghost_tets;
+    if(has_vertex(r, 3, ghost_vertex)) ++m.ghost_tets;
   }
-}
+
+  std::unique_ptr<Delaunay> delaunay_;
+  std::vector<Reference_cell> cells_;      // by slot; null for a free slot
+  std::vector<Reference_vertex> vertices_; // by vertex id
+};
 
 // Checks the cells of a triangulation of dimension -1 to 2: CGAL's
 // combinatorial conventions (counts, adjacency, orientation of neighbours,

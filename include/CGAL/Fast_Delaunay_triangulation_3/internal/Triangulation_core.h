@@ -7,10 +7,11 @@
 // and iterators; data flows one way: points -> sort -> kernel -> arrays.
 //
 // Dimensions below 3: the (distinct) vertices and CGAL's lower-dimensional
-// cells (Lower_dimensions.h), rebuilt by every insertion that adds a vertex;
-// the first insertion that makes the points span 3D builds the tetrahedra of
-// all of them.  Vertex ids never change once given, except that a bulk
-// insertion removes its own duplicates before returning.
+// cells, kept by a CGAL triangulation updated point by point
+// (Lower_dimensions.h); the first insertion that makes the points span 3D
+// drops it and builds the tetrahedra of all of them.  Vertex ids never change
+// once given, except that a bulk insertion removes its own duplicates before
+// returning.
 
 #ifndef CGAL_FDT3_INTERNAL_TRIANGULATION_CORE_H
 #define CGAL_FDT3_INTERNAL_TRIANGULATION_CORE_H
@@ -50,6 +51,8 @@ class Triangulation_core
 public:
   Flat_storage mesh;
   int dimension = -1;
+  // Active exactly while dimension < 3.
+  Lower_dimensional_triangulation lower;
   std::uint64_t seed = 0;
   bool timed = false; // per-phase times (four clock reads per point)
   // Moore partitions inserted concurrently (1: sequential kernel only).
@@ -78,6 +81,7 @@ public:
   {
     mesh.with_sub_determinants = sub_determinants_by_default;
     reset_bounding_box();
+    lower.start();
   }
 
   void clear()
@@ -85,6 +89,7 @@ public:
     mesh.clear();
     reset_bounding_box();
     dimension = -1;
+    lower.start();
     hint_ = 0;
   }
 
@@ -98,7 +103,8 @@ public:
     mesh = std::move(built);
     mesh.with_sub_determinants = false;
     dimension = built_dimension;
-    if(dimension < 3 && !mesh.vertices.empty()) build_lower_dimensional_cells(mesh, dimension);
+    if(dimension < 3) lower.rebuild(mesh);
+    else lower.stop();
     reset_bounding_box();
     extend_bounding_box(0);
     hint_ = mesh.first_live_tet();
@@ -157,15 +163,19 @@ public:
     // duplicate_of[i]: the vertex that new vertex first_new + i duplicates, or
     // ghost_vertex if it is a genuine new vertex.
     std::vector<Vertex_id> duplicate_of(n, ghost_vertex);
+    Vertex_id simplex[4];
+    std::size_t added = 0;
     if(dimension == 3) {
       mesh.reserve_tets(expected_tets(n));
       insert_new_vertices(first_new, order.round_end, duplicate_of, nullptr);
+    } else if(extend_affine_hull(first_new, hull_simplex(simplex), simplex) == 3) {
+      lift_to_dimension_3(first_new, order.round_end, duplicate_of);
     } else {
-      build_or_stay_low_dimensional(first_new, order.round_end, duplicate_of);
+      // Duplicates are found by CGAL's insertion, which writes final ids.
+      added = insert_below_dimension_3(first_new, duplicate_of);
     }
     const Clock::time_point t2 = Clock::now();
-    const std::size_t added = remove_duplicates(first_new, duplicate_of);
-    if(dimension < 3 && added != 0) build_lower_dimensional_cells(mesh, dimension);
+    if(dimension == 3) added = remove_duplicates(first_new, duplicate_of);
     if(vertex_of_input) {
       vertex_of_input->resize(n);
       for(std::size_t i = 0; i < n; ++i)
@@ -187,7 +197,50 @@ public:
   int affine_dimension() const
   {
     Vertex_id simplex[4];
-    return affine_independent_vertices(static_cast<Vertex_id>(number_of_vertices()), simplex);
+    return extend_affine_hull(0, -1, simplex);
+  }
+
+  // Below dimension 3, one point as CGAL's insert(p, start) (`where` null)
+  // or insert(p, lt, c, li, lj) (`where` = locate(p)'s answer).  Returns its
+  // vertex (an older one for a duplicate); `around` receives the cells of
+  // that vertex in the order of CGAL's insert_and_give_new_cells, or nothing
+  // when the point lifts the triangulation to 3D.
+  Vertex_id insert_one_below_dimension_3(const double* p, Tet_id start,
+                                         const Lower_dimensional_triangulation::Location* where,
+                                         std::vector<Tet_id>& around)
+  {
+    CGAL_precondition(dimension < 3);
+    around.clear();
+    const Vertex_id v = append_vertex(p);
+    Vertex_id simplex[4];
+    if(extend_affine_hull(v, hull_simplex(simplex), simplex) == 3) {
+      mesh.vertices.resize(v);
+      return insert_one(p);
+    }
+    last_report = Insertion_report();
+    last_report.points = 1;
+    const Vertex_id inserted =
+        where ? lower.insert(mesh, v, *where, &around)
+              : lower.insert(mesh, v, start < mesh.number_of_slots() && mesh.is_live(start)
+                                          ? lower.cell(start) : Lower_dimensional_triangulation::Reference_cell(),
+                             &around);
+    if(inserted != v) mesh.vertices.resize(v); // the box keeps p: it is an existing vertex
+    dimension = lower.delaunay().dimension();
+    return inserted;
+  }
+
+  // Dimension 2, CGAL's insert_in_hole: the triangles hole[0..n), star-shaped
+  // from p (p is no vertex), replaced by the new vertex joined to the hole's
+  // boundary edges; (begin, i) is one of them.
+  Vertex_id insert_in_hole_below_dimension_3(const double* p, const std::vector<Tet_id>& hole, Tet_id begin, int i,
+                                             std::vector<Tet_id>& around)
+  {
+    CGAL_precondition(dimension == 2);
+    const Vertex_id v = append_vertex(p);
+    lower.insert_in_hole(mesh, v, hole, begin, i, &around);
+    last_report = Insertion_report();
+    last_report.points = 1;
+    return v;
   }
 
   // Dimension 3: one point by the sequential kernel, its walk starting at
@@ -341,48 +394,85 @@ private:
   }
 
 
-  // Dimension < 3 before this insertion: find four affinely independent
-  // vertices (exactly) among all vertices; if they exist, build the 3D
-  // triangulation of everything, else only deduplicate.
-  void build_or_stay_low_dimensional(Vertex_id first_new, const std::vector<std::size_t>& round_end,
-                                     std::vector<Vertex_id>& duplicate_of)
+  // The new vertices [first_new, end) make the points span 3D: CGAL's
+  // triangulation is dropped and the tetrahedra of all vertices are built
+  // from the first four affinely independent ones (in the order of the ids).
+  void lift_to_dimension_3(Vertex_id first_new, const std::vector<std::size_t>& round_end,
+                           std::vector<Vertex_id>& duplicate_of)
   {
     const Clock::time_point t0 = Clock::now();
-    const Vertex_id count = static_cast<Vertex_id>(number_of_vertices());
     Vertex_id simplex[4];
-    const int spanned = affine_independent_vertices(count, simplex);
-    if(spanned < 3) {
-      mark_duplicates_by_sorting(first_new, duplicate_of);
-      dimension = spanned;
-      last_report.init_seconds = seconds(t0, Clock::now());
-      return;
-    }
+    const int spanned = extend_affine_hull(0, -1, simplex);
+    CGAL_assertion(spanned == 3);
+    (void)spanned;
+    lower.stop();
     create_initial_tetrahedron(simplex);
     dimension = 3;
     last_report.init_seconds = seconds(t0, Clock::now());
-    mesh.reserve_tets(expected_tets(count));
+    mesh.reserve_tets(expected_tets(number_of_vertices()));
     insert_range(0, first_new, first_new, duplicate_of, simplex);
     insert_new_vertices(first_new, round_end, duplicate_of, simplex);
   }
 
-  // The dimension of the affine hull of vertices [0, count) (-1 if empty),
-  // and vertices spanning it in simplex[0..dimension].
-  int affine_independent_vertices(Vertex_id count, Vertex_id simplex[4]) const
+  // The new vertices [first_new, end), which keep the points in less than
+  // 3D, inserted one by one into CGAL's triangulation in the order of their
+  // ids (BRIO / Moore order, so each locate starts near its point).  The
+  // records are compacted as CGAL finds duplicates, so every vertex enters
+  // with its final id; duplicate_of[i] becomes the final id of new vertex i.
+  // Returns the number of vertices added.
+  std::size_t insert_below_dimension_3(Vertex_id first_new, std::vector<Vertex_id>& duplicate_of)
   {
-    if(count == 0) return -1;
-    simplex[0] = 0;
-    Vertex_id v = 1;
-    for(; v < count && same_point(mesh.point(v), mesh.point(simplex[0])); ++v) {}
-    if(v == count) return 0;
-    simplex[1] = v;
-    for(++v; v < count && collinear(mesh.point(simplex[0]), mesh.point(simplex[1]), mesh.point(v)); ++v) {}
-    if(v >= count) return 1;
-    simplex[2] = v;
-    for(++v; v < count && orientation(mesh.point(simplex[0]), mesh.point(simplex[1]),
-                                      mesh.point(simplex[2]), mesh.point(v)) == 0; ++v) {}
-    if(v >= count) return 2;
-    simplex[3] = v;
-    return 3;
+    const Clock::time_point t0 = Clock::now();
+    Lower_dimensional_triangulation::Reference_cell hint;
+    Vertex_id next = first_new;
+    for(std::size_t i = 0; i < duplicate_of.size(); ++i) {
+      if(next != first_new + i) mesh.vertices[next] = mesh.vertices[first_new + i];
+      const Vertex_id v = lower.insert(mesh, next, hint, nullptr);
+      hint = lower.vertex(v)->cell();
+      duplicate_of[i] = v;
+      if(v == next) ++next;
+    }
+    mesh.vertices.resize(next);
+    dimension = lower.delaunay().dimension();
+    last_report.insertion_seconds = seconds(t0, Clock::now());
+    return next - first_new;
+  }
+
+  // Vertices spanning the affine hull of all vertices below dimension 3: the
+  // finite vertices of a finite cell of CGAL's triangulation.  Returns the
+  // dimension.
+  int hull_simplex(Vertex_id simplex[4]) const
+  {
+    CGAL_precondition(dimension < 3);
+    if(dimension < 0) return dimension;
+    typedef Lower_dimensional_triangulation::Reference_cell Reference_cell;
+    const auto& dt = lower.delaunay();
+    const Reference_cell infinite = dt.infinite_vertex()->cell();
+    const Reference_cell finite = dimension == 0 ? infinite->neighbor(0)
+                                                 : infinite->neighbor(infinite->index(dt.infinite_vertex()));
+    for(int i = 0; i <= dimension; ++i) simplex[i] = Lower_dimensional_triangulation::id(finite->vertex(i));
+    return dimension;
+  }
+
+  // Greedily extends simplex[0..spanned] (affinely independent vertices
+  // spanning the hull of the vertices before `first`) with the vertices from
+  // `first` on: the first vertex, the first different from it, the first
+  // not collinear with those, the first not coplanar with those three (exact
+  // predicates).  Returns the dimension of the hull of all vertices.
+  int extend_affine_hull(Vertex_id first, int spanned, Vertex_id simplex[4]) const
+  {
+    const Vertex_id count = static_cast<Vertex_id>(number_of_vertices());
+    for(Vertex_id v = first; v < count && spanned < 3; ++v) {
+      const double* p = mesh.point(v);
+      const bool independent =
+          spanned == -1 ||
+          (spanned == 0 && !same_point(mesh.point(simplex[0]), p)) ||
+          (spanned == 1 && !collinear(mesh.point(simplex[0]), mesh.point(simplex[1]), p)) ||
+          (spanned == 2 &&
+           orientation(mesh.point(simplex[0]), mesh.point(simplex[1]), mesh.point(simplex[2]), p) != 0);
+      if(independent) simplex[++spanned] = v;
+    }
+    return spanned;
   }
 
   // One finite tetrahedron and its four ghosts; adjacency by matching facets.
@@ -434,24 +524,6 @@ private:
     return 0;
   }
 
-  void mark_duplicates_by_sorting(Vertex_id first_new, std::vector<Vertex_id>& duplicate_of) const
-  {
-    std::vector<Vertex_id> ids(number_of_vertices());
-    std::iota(ids.begin(), ids.end(), Vertex_id(0));
-    std::stable_sort(ids.begin(), ids.end(), [this](Vertex_id a, Vertex_id b) {
-      return lexicographically_smaller(mesh.point(a), mesh.point(b));
-    });
-    // Older vertices come first among equal points (stable sort by id).
-    for(std::size_t k = 1; k < ids.size(); ++k) {
-      std::size_t j = k;
-      while(j > 0 && same_point(mesh.point(ids[j - 1]), mesh.point(ids[k]))) --j;
-      if(j != k) {
-        CGAL_assertion(ids[k] >= first_new);
-        duplicate_of[ids[k] - first_new] = ids[j];
-      }
-    }
-  }
-
   // Drops the duplicate vertex records of the last insertion, renumbering
   // the new vertices; turns duplicate_of into the final id of every new
   // vertex.  Returns the number of vertices added.
@@ -495,7 +567,7 @@ inline bool Triangulation_core::is_valid(std::string* why) const
     if(why) *why = message;
     return false;
   };
-  if(dimension < 3) return lower_dimensional_cells_are_valid(mesh, dimension, why);
+  if(dimension < 3) return lower_dimensional_cells_are_valid(mesh, dimension, why) && lower.is_copied_into(mesh, why);
   const Flat_storage& m = mesh;
   std::size_t live = 0, ghosts = 0;
   std::vector<char> used(number_of_vertices(), 0);
