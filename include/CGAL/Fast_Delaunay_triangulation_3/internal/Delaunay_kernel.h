@@ -80,7 +80,7 @@ struct Insertion_scratch
   Raw_array<Boundary_facet> boundary;    // facets of the cavity boundary
   Raw_array<Facet_code> boundary_inner;  // the same facets seen from the cavity, while searching
   std::vector<Tet_id> ball;              // slots of the new tetrahedra
-  std::vector<Vertex_id> boundary_vertices;
+  Raw_array<Vertex_id> boundary_vertices;  // numbered cavity boundary vertices, in order
   struct Half_edge { std::uint64_t key; Facet_code facet; };
   std::vector<Half_edge> large_edges;     // fallback adjacency for large cavities
   Facet_code edge_table[table_size * table_size];
@@ -315,8 +315,7 @@ public:
   {
     s_.cavity.resize(n);
     std::copy(cells, cells + n, s_.cavity.begin());
-    s_.boundary.clear();
-    s_.boundary_vertices.clear();
+    s_.boundary_inner.clear();
     cavity_ghosts_ = 0;
     for(Tet_id t : s_.cavity) {
       CGAL_precondition(m_.is_live(t));
@@ -324,13 +323,9 @@ public:
       cavity_ghosts_ += m_.is_ghost(t) ? 1 : 0;
     }
     for(Tet_id t : s_.cavity)
-      for(int f = 0; f < 4; ++f) {
-        const Facet_code code = m_.neighbor_code(t, f);
-        if(!m_.is_live(tet_of(code))) continue;
-        const std::size_t k = s_.boundary.size();
-        s_.boundary.resize(k + 1);
-        write_boundary_facet(s_.boundary[k], t, f, code);
-      }
+      for(int f = 0; f < 4; ++f)
+        if(m_.is_live(m_.neighbor(t, f))) s_.boundary_inner.push_back(facet_code(t, f));
+    complete_boundary();
     const bool filled = delaunay_ball(v);
     CGAL_assertion(filled); // the mesh's own slots never run out
     (void)filled;
@@ -388,7 +383,6 @@ private:
   {
     Raw_array<Tet_id>& cavity = s_.cavity;
     Raw_array<Facet_code>& inner = s_.boundary_inner;
-    s_.boundary_vertices.clear();
     // Both arrays are used up to their capacity; a popped tetrahedron adds at
     // most 4 entries to either, so capacity is checked once per pop.
     cavity.resize(std::max<std::size_t>(cavity.capacity(), 64));
@@ -396,11 +390,7 @@ private:
     Tet_id* queue = cavity.data();
     Facet_code* facets = inner.data();
     std::size_t queued = 0, found = 0;
-
-    cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
-    m_.mark_free(start);
-    prefetch_neighbors(start);
-    queue[queued++] = start;
+    bool complete = true;
 
     // Whether a neighbour is in conflict is a coin toss that the branch
     // predictor cannot learn, and a mispredicted branch on it is resolved
@@ -409,46 +399,61 @@ private:
     // as the next queue entry and as the next boundary candidate, and only
     // the counts move with it.  Boundary records, whose vertex numbering
     // branches, are built after the search (complete_boundary).
-    for(std::size_t k = 0; k < queued; ++k) {
-      if(queued + 4 > cavity.size()) {
+    auto visit = [&](Tet_id t, int f) {
+      const Facet_code code = m_.neighbor_code(t, f);
+      const Tet_id u = tet_of(code);
+      Vertex_id* uv = m_.tets[u].v;
+      if(uv[0] & mark_bit) return; // in the cavity already
+      // A tetrahedron touching the cavity through several facets is tested once.
+      bool conflict = false;
+      if(!(uv[1] & mark_bit)) {
+        ++s_.stats.conflict_tests;
+        conflict = in_conflict(u, p);
+        if(Ownership::partitioned && conflict && !ownership_.owns(m_, u)) {
+          complete = false;
+          return;
+        }
+        uv[0] |= static_cast<Vertex_id>(conflict) << 31;
+        uv[1] |= static_cast<Vertex_id>(!conflict) << 31;
+        cavity_ghosts_ += conflict & (uv[3] == ghost_vertex);
+      }
+      prefetch_neighbors(u);
+      // Queued as the facet through which it was entered, which the search
+      // then does not look back through.
+      queue[queued] = code;
+      queued += conflict;
+      facets[found] = facet_code(t, f);
+      found += !conflict;
+    };
+
+    cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
+    m_.mark_free(start);
+    queue[queued++] = start;
+    for(int f = 0; f < 4 && complete; ++f) visit(start, f);
+    for(std::size_t k = 1; k < queued && complete; ++k) {
+      if(queued + 3 > cavity.size()) {
         cavity.resize(2 * cavity.size());
         queue = cavity.data();
       }
-      if(found + 4 > inner.size()) {
+      if(found + 3 > inner.size()) {
         inner.resize(2 * inner.size());
         facets = inner.data();
       }
-      const Tet_id t = queue[k];
-      for(int f = 0; f < 4; ++f) {
-        const Facet_code code = m_.neighbor_code(t, f);
-        const Tet_id u = tet_of(code);
-        Vertex_id* uv = m_.tets[u].v;
-        if(uv[0] & mark_bit) continue; // in the cavity already
-        // A tetrahedron touching the cavity through several facets is tested once.
-        bool conflict = false;
-        if(!(uv[1] & mark_bit)) {
-          ++s_.stats.conflict_tests;
-          conflict = in_conflict(u, p);
-          if(Ownership::partitioned && conflict && !ownership_.owns(m_, u)) {
-            cavity.resize(queued);
-            inner.resize(found);
-            undo_search();
-            return false;
-          }
-          uv[0] |= static_cast<Vertex_id>(conflict) << 31;
-          uv[1] |= static_cast<Vertex_id>(!conflict) << 31;
-          cavity_ghosts_ += conflict & (uv[3] == ghost_vertex);
-        }
-        prefetch_neighbors(u);
-        queue[queued] = u;
-        queued += conflict;
-        facets[found] = facet_code(t, f);
-        found += !conflict;
-      }
+      const Facet_code entered = static_cast<Facet_code>(queue[k]);
+      const Tet_id t = tet_of(entered);
+      const int back = facet_of(entered);
+      visit(t, (back + 1) & 3);
+      visit(t, (back + 2) & 3);
+      visit(t, (back + 3) & 3);
     }
-    static_assert(mark_bit == Vertex_id(1) << 31, "the marks are the top bits");
+    for(std::size_t k = 1; k < queued; ++k) queue[k] = tet_of(static_cast<Facet_code>(queue[k]));
     cavity.resize(queued);
     inner.resize(found);
+    if(!complete) {
+      undo_search();
+      return false;
+    }
+    static_assert(mark_bit == Vertex_id(1) << 31, "the marks are the top bits");
     complete_boundary();
     s_.stats.cavity_tets += queued;
     return true;
@@ -462,12 +467,17 @@ private:
     const std::size_t found = s_.boundary_inner.size();
     s_.boundary.resize(found);
     Boundary_facet* facets = s_.boundary.data();
+    // A closed triangulated surface of F facets has F / 2 + 2 vertices.
+    s_.boundary_vertices.resize(found + 4);
+    numbered_ = s_.boundary_vertices.data();
+    numbered_count_ = 0;
     for(std::size_t k = 0; k < found; ++k) {
       const Facet_code code = s_.boundary_inner[k];
       const Facet_code outside = m_.neighbor_code(code);
       m_.unmark_outside(tet_of(outside));
       write_boundary_facet(facets[k], tet_of(code), facet_of(code), outside);
     }
+    s_.boundary_vertices.resize(numbered_count_);
   }
 
   // A tetrahedron joins the cavity queue long before it is popped, and its
@@ -579,15 +589,21 @@ private:
   // while the boundary facet is recorded, when the vertex is in cache anyway.
   // Past 31 vertices the numbers are meaningless (saturated) and the ball
   // uses the sorted fallback.
+  // Whether v is new on the boundary is, again, a branch no predictor
+  // learns: v is written at the end of the list either way and the count
+  // moves only for a new one.
   std::uint8_t number_vertex(Vertex_id v)
   {
     if(v == ghost_vertex) return 0;
     std::uint64_t& tag = m_.vertices[v].scratch;
-    if(tag == 0) {
-      s_.boundary_vertices.push_back(v);
-      tag = std::min<std::uint64_t>(s_.boundary_vertices.size(), Insertion_scratch::table_size - 1);
-    }
-    return static_cast<std::uint8_t>(tag);
+    const std::uint64_t old = tag;
+    const bool fresh = old == 0;
+    numbered_[numbered_count_] = v;
+    numbered_count_ += fresh;
+    const std::uint64_t number =
+        fresh ? std::min<std::uint64_t>(numbered_count_, Insertion_scratch::table_size - 1) : old;
+    tag = number;
+    return static_cast<std::uint8_t>(number);
   }
 
   // Every table entry read in the second pass was written in the first: the
@@ -656,6 +672,8 @@ private:
   Sub_determinant_filter sub_filter_;
   Ownership ownership_;
   std::size_t cavity_ghosts_ = 0;
+  Vertex_id* numbered_ = nullptr; // boundary_vertices while complete_boundary() fills it
+  std::size_t numbered_count_ = 0;
 };
 
 // Algorithm 1's loop: inserts the vertices of `points` (records written) in
