@@ -399,7 +399,7 @@ private:
     // as the next queue entry and as the next boundary candidate, and only
     // the counts move with it.  Boundary records, whose vertex numbering
     // branches, are built after the search (complete_boundary).
-    auto visit = [&](Tet_id t, int f) {
+    auto visit = [&](Tet_id t, int f) __attribute__((always_inline)) {
       const Facet_code code = m_.neighbor_code(t, f);
       const Tet_id u = tet_of(code);
       Vertex_id* uv = m_.tets[u].v;
