@@ -174,8 +174,7 @@ inline double in_sphere_determinant(const double* p, const double* q, const doub
 // same minors and the same sums as the scalar ones (only the association of
 // the final sum and the FMA contractions differ), so the error bounds of the
 // filters hold unchanged.  The scratch lanes leave in the transpose, before
-// any arithmetic: read as doubles they are denormals, which would cost
-// microcode assists.
+// any arithmetic.
 namespace simd_records {
 
 struct Columns
@@ -186,13 +185,14 @@ struct Columns
 inline Columns columns_relative_to(const double* a, const double* b, const double* c, const double* d,
                                    const double* t)
 {
-  const __m256d ra = _mm256_loadu_pd(a), rb = _mm256_loadu_pd(b);
-  const __m256d rc = _mm256_loadu_pd(c), rd = _mm256_loadu_pd(d);
-  const __m256d ab_xz = _mm256_unpacklo_pd(ra, rb), ab_yw = _mm256_unpackhi_pd(ra, rb);
-  const __m256d cd_xz = _mm256_unpacklo_pd(rc, rd), cd_yw = _mm256_unpackhi_pd(rc, rd);
-  return {_mm256_sub_pd(_mm256_permute2f128_pd(ab_xz, cd_xz, 0x20), _mm256_broadcast_sd(t)),
-          _mm256_sub_pd(_mm256_permute2f128_pd(ab_yw, cd_yw, 0x20), _mm256_broadcast_sd(t + 1)),
-          _mm256_sub_pd(_mm256_permute2f128_pd(ab_xz, cd_xz, 0x31), _mm256_broadcast_sd(t + 2))};
+  // (x, y) pairs in 128-bit halves and z gathered, so that nothing past the
+  // three coordinates is read: in a partitioned insertion another thread
+  // may be writing the scratch word that follows them.
+  const __m256d ac = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(a)), _mm_loadu_pd(c), 1);
+  const __m256d bd = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(b)), _mm_loadu_pd(d), 1);
+  return {_mm256_sub_pd(_mm256_unpacklo_pd(ac, bd), _mm256_broadcast_sd(t)),
+          _mm256_sub_pd(_mm256_unpackhi_pd(ac, bd), _mm256_broadcast_sd(t + 1)),
+          _mm256_sub_pd(_mm256_set_pd(d[2], c[2], b[2], a[2]), _mm256_broadcast_sd(t + 2))};
 }
 
 constexpr int next = _MM_SHUFFLE(0, 3, 2, 1), opposite = _MM_SHUFFLE(1, 0, 3, 2);
