@@ -93,6 +93,8 @@ int main(int argc, char** argv)
                 << " filtered, " << stats.aborted_points << " aborted; "
                 << stats.points_settled_in_partitions << " points settled by " << stats.partitioned_attempts
                 << " partitioned attempts)\n"
+                << "  sample, filter, insert " << stats.sample_seconds << " s, " << stats.filter_seconds << " s, "
+                << stats.insert_seconds << " s\n"
                 << "total (without input)   " << stats.total_seconds << " s, "
                 << (stats.total_seconds > 0 ? mesh.tetrahedra.size() / stats.total_seconds : 0)
                 << " tetrahedra per second\n";

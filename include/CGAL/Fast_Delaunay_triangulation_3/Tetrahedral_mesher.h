@@ -84,6 +84,9 @@ struct Mesher_statistics
   bool used_tetgen = false;
   std::size_t steiner_points = 0;    // added by the recovery, inside the volumes
   int refinement_passes = 0;
+  // Parts of refinement_seconds: SAMPLEPOINTS, FILTERPOINTS (sequential) and
+  // INSERTPOINTS (the partitioned engine).
+  double sample_seconds = 0, filter_seconds = 0, insert_seconds = 0;
   std::size_t refinement_points = 0, filtered_points = 0, aborted_points = 0;
   // Refinement points inserted or dropped by attempts with several
   // partitions, and the number of such attempts (the rest is sequential).
@@ -137,6 +140,9 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& optio
     stats.refinement_points += pass.inserted;
     stats.filtered_points += pass.filtered_out;
     stats.aborted_points += pass.aborted;
+    stats.sample_seconds += pass.sample_seconds;
+    stats.filter_seconds += pass.filter_seconds;
+    stats.insert_seconds += pass.insert_seconds;
     stats.points_settled_in_partitions += pass.settled_in_partitions;
     for(const auto& attempt : pass.attempts) stats.partitioned_attempts += attempt.partitions > 1 ? 1 : 0;
   }

@@ -65,6 +65,7 @@ struct Refinement_pass
   std::vector<Partition_round> attempts;  // the engine's attempts (paper Table 2)
   std::size_t tetrahedra = 0; // live finite tetrahedra inside the volumes after the pass
   double seconds = 0;
+  double sample_seconds = 0, filter_seconds = 0, insert_seconds = 0; // parts of `seconds`
 };
 
 // A refinement point: where, its size, the tetrahedron that contains it
@@ -275,9 +276,15 @@ public:
       Refinement_pass pass;
       std::vector<Refinement_point> points = sample_points();
       pass.candidates = points.size();
+      const Clock::time_point t1 = Clock::now();
       filter_points(points);
       pass.filtered_out = pass.candidates - points.size();
+      const Clock::time_point t2 = Clock::now();
       insert_points(points, pass);
+      const Clock::time_point t3 = Clock::now();
+      pass.sample_seconds = std::chrono::duration<double>(t1 - t0).count();
+      pass.filter_seconds = std::chrono::duration<double>(t2 - t1).count();
+      pass.insert_seconds = std::chrono::duration<double>(t3 - t2).count();
       CGAL_assertion_code(std::string why;)
       CGAL_assertion_msg(cm_.is_valid(&why), why.c_str());
       pass.tetrahedra = count_volume_tetrahedra();
