@@ -44,7 +44,7 @@ std::vector<Case> cases()
   const Surface cube = mesher_shapes::cube(0, 1), sphere = mesher_shapes::icosphere(2, 1.0),
                 torus = mesher_shapes::torus(1.0, 0.35, 24, 10),
                 inner = mesher_shapes::icosphere(1, 0.45, {0.05, -0.02, 0.03});
-  return {case_of("cube", cube, 0.07, cube), case_of("sphere", sphere, 0.12, sphere),
+  return {case_of("cube", cube, 0.07, cube), case_of("sphere", sphere, 0.1, sphere),
           case_of("torus", torus, 0.09, torus),
           case_of("nested spheres", mesher_shapes::combine(sphere, inner), 0.12, sphere)};
 }
