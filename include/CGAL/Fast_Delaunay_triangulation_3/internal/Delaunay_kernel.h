@@ -130,6 +130,9 @@ struct Sequential_ownership
 // the buffer zone) are never modified, so threads never touch the same
 // tetrahedron: an outside neighbour of a cavity shares a facet of three owned
 // vertices with it, hence cannot have three vertices of another partition.
+// The paper's rule (three of four vertices) would not do here: a tetrahedron
+// with two vertices of each of two partitions could be just outside a cavity
+// of each, and the kernel writes its mark and neighbour codes there.
 struct Partition_ownership
 {
   static constexpr bool partitioned = true;

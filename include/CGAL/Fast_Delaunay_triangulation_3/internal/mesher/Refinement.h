@@ -19,11 +19,13 @@
 // with its own per-point step, Constrained_point_insertion: the kernel's
 // WALK (one that gives up, the mesh not being Delaunay), the constrained
 // star-shaped cavity, then the kernel's DELAUNAYBALL (fill_hole).  A
-// partition owns the tetrahedra whose vertices are all in it; a point whose
-// walk leaves them, or whose cavity reaches another one, is tried again
-// with new partitions, and the last ones sequentially (§3.3-§3.4).  Points
-// dropped by the rules above are dropped whatever the partitions.  The mesh
-// depends on the thread count (the partitions), never on the scheduling.
+// partition owns the tetrahedra whose vertices are all in it (the engine's
+// rule, stricter than the paper's three of four: see Partition_ownership);
+// a point whose walk leaves them, or whose cavity reaches another one, is
+// tried again with new partitions, and the last ones sequentially
+// (§3.3-§3.4).  Points dropped by the rules above are dropped whatever the
+// partitions.  The mesh depends on the thread count (the partitions), never
+// on the scheduling.
 
 #ifndef CGAL_FDT3_INTERNAL_MESHER_REFINEMENT_H
 #define CGAL_FDT3_INTERNAL_MESHER_REFINEMENT_H
@@ -59,6 +61,8 @@ struct Refinement_options
 
 struct Refinement_pass
 {
+  // aborted: filtered points the insertion dropped (edge filter, star
+  // shape, subdomain, walk), whatever the partitions.
   std::size_t candidates = 0, filtered_out = 0, aborted = 0, inserted = 0;
   std::size_t settled_in_partitions = 0; // points inserted or dropped by attempts with several partitions
   std::vector<Partition_round> attempts;  // the engine's attempts (paper Table 2)
