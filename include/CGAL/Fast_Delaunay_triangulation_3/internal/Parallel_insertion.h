@@ -302,7 +302,7 @@ private:
     resize_cell_arrays(fresh_begin[partitions]);
     policy.prepare(partitions, fresh_begin[partitions]);
 
-    std::vector<Tet_id> hints = owned_start_tets(partitions);
+    std::vector<Tet_id> hints = owned_start_tets(partitions, fresh_begin[0]);
     std::vector<std::vector<Tet_id>> free_lists(partitions);
     for(std::size_t k = 0; k < m_.free_tets.size(); ++k)
       free_lists[k % partitions].push_back(m_.free_tets[k]);
@@ -353,14 +353,16 @@ private:
 
   // A live tetrahedron owned by each partition (no_tet if none), found by one
   // sequential scan before the tasks start, so that no task reads cells
-  // another task is rewriting.
-  std::vector<Tet_id> owned_start_tets(int partitions) const
+  // another task is rewriting.  Only the slots below `end` hold cells: the
+  // fresh ranges above are unwritten (a partition that owns nothing made the
+  // scan run into them and read garbage vertex ids).
+  std::vector<Tet_id> owned_start_tets(int partitions, Tet_id end) const
   {
     std::vector<Tet_id> hints(partitions, no_tet);
     int missing = partitions;
     Partition_ownership ownership;
     ownership.partition_of_vertex = partition_of_vertex_.data();
-    for(Tet_id t = 0; t < m_.number_of_slots() && missing > 0; ++t) {
+    for(Tet_id t = 0; t < end && missing > 0; ++t) {
       if(!m_.is_live(t)) continue;
       const std::uint8_t j = partition_of_vertex_[m_.vertex(t, 0)];
       if(hints[j] != no_tet) continue;

@@ -163,7 +163,11 @@ inline double in_sphere_determinant(const double* p, const double* q, const doub
   return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
 }
 
-#if defined(__AVX2__) && defined(__FMA__)
+// Not under ThreadSanitizer: a record load also reads the scratch word,
+// which another partition's kernel may be writing at that moment (the
+// boundary number of one of its own vertices, in a tetrahedron both read).
+// The lane is dropped before any arithmetic, but TSan reports the read.
+#if defined(__AVX2__) && defined(__FMA__) && !defined(__SANITIZE_THREAD__)
 #define CGAL_FDT3_SIMD_RECORDS 1
 // Predicates on four points that are 32-byte vertex records (x, y, z,
 // scratch word), with the 4x4 matrix held in AVX registers: lane i of a
