@@ -25,7 +25,8 @@ int usage(const char* program)
             << "  INPUT   closed triangulated surfaces (.off .stl .obj .ply); nested surfaces give several subdomains\n"
             << "  OUTPUT  .mesh (Medit), .vtu (VTK) or .msh (Gmsh 4.1)\n"
             << "  --size H     maximum mesh size (default: the surface's edge lengths, interpolated)\n"
-            << "  --threads K  threads of the Delaunay engine (refinement batches are sequential for now)\n"
+            << "  --threads K  Moore partitions (threads) of the empty mesh and of every refinement batch;\n"
+            << "               the same input and K give the same mesh\n"
             << "  --quiet      print nothing but errors\n";
   return 2;
 }
@@ -89,7 +90,11 @@ int main(int argc, char** argv)
                 << "colouring and sizes     " << stats.colouring_seconds << " s\n"
                 << "refinement              " << stats.refinement_seconds << " s (" << stats.refinement_passes
                 << " passes, " << stats.refinement_points << " points inserted, " << stats.filtered_points
-                << " filtered, " << stats.aborted_points << " aborted)\n"
+                << " filtered, " << stats.aborted_points << " aborted; "
+                << stats.points_settled_in_partitions << " points settled by " << stats.partitioned_attempts
+                << " partitioned attempts)\n"
+                << "  sample, filter, insert " << stats.sample_seconds << " s, " << stats.filter_seconds << " s, "
+                << stats.insert_seconds << " s\n"
                 << "total (without input)   " << stats.total_seconds << " s, "
                 << (stats.total_seconds > 0 ? mesh.tetrahedra.size() / stats.total_seconds : 0)
                 << " tetrahedra per second\n";

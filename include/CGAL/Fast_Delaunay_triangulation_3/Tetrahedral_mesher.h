@@ -12,7 +12,8 @@
 //   colouring        one subdomain per volume, the outside dropped
 //   refinement       circumcentres of tetrahedra with radius > 1.4 h, filtered
 //                    at 0.7 h, inserted by batches with constrained,
-//                    star-shaped cavities
+//                    star-shaped cavities, each batch by the partitioned
+//                    parallel engine of §3
 //
 //   #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 //   CGAL::Fast_mesher_3::Tetrahedral_mesh mesh =
@@ -21,8 +22,8 @@
 //
 // Also as CGAL's Mesh_complex_3_in_triangulation_3: mesh_surfaces_to_c3t3.
 //
-// Not yet (issue 5): batches are inserted by one thread; no user size
-// function; no mesh improvement (slivers stay); surfaces may not touch.
+// Not yet (issue 5): no user size function; no mesh improvement (slivers
+// stay); surfaces may not touch.
 
 #ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
@@ -38,6 +39,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Volume_colouring.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <functional>
@@ -55,8 +57,16 @@ struct Mesher_options
 {
   // Global maximum of h; the default size is the surface's, interpolated.
   double maximum_size = std::numeric_limits<double>::infinity();
-  // Threads of the empty mesh (the refinement batches are sequential for now).
+  // Moore partitions (one per thread) of the empty mesh and of every
+  // refinement batch; 1 is sequential.  The mesh depends on this number
+  // only, not on the threads that run the partitions: the same input and
+  // `threads` give the same mesh, bit for bit.
   int threads = 1;
+  // A refinement batch with fewer points per partition halves its
+  // partitions (the paper's 3000, §3.4); lower only to exercise the
+  // partitions on small inputs.
+  std::size_t min_points_per_thread =
+      Fast_Delaunay_triangulation_3_internal::Partitioned_insertion::default_min_points_per_partition;
   double radius_ratio = 1.4;
   double min_edge_ratio = 0.7;
   int max_refinement_passes = 200;
@@ -74,7 +84,14 @@ struct Mesher_statistics
   bool used_tetgen = false;
   std::size_t steiner_points = 0;    // added by the recovery, inside the volumes
   int refinement_passes = 0;
+  // Parts of refinement_seconds: SAMPLEPOINTS, FILTERPOINTS (sequential) and
+  // INSERTPOINTS (the partitioned engine).
+  double sample_seconds = 0, filter_seconds = 0, insert_seconds = 0;
   std::size_t refinement_points = 0, filtered_points = 0, aborted_points = 0;
+  // Refinement points inserted or dropped by attempts with several
+  // partitions, and the number of such attempts (the rest is sequential).
+  std::size_t points_settled_in_partitions = 0;
+  std::size_t partitioned_attempts = 0;
 };
 
 namespace mesher_detail {
@@ -112,6 +129,8 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& optio
   refinement.radius_ratio = options.radius_ratio;
   refinement.min_edge_ratio = options.min_edge_ratio;
   refinement.max_passes = options.max_refinement_passes;
+  refinement.threads = std::max(1, options.threads);
+  refinement.min_points_per_thread = options.min_points_per_thread;
   Constrained_refinement refine(cm, refinement);
   const std::vector<Refinement_pass> passes = refine.run([&](const Refinement_pass& pass, int k) {
     if(options.progress) options.progress(k, pass.inserted, pass.tetrahedra);
@@ -121,6 +140,11 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& optio
     stats.refinement_points += pass.inserted;
     stats.filtered_points += pass.filtered_out;
     stats.aborted_points += pass.aborted;
+    stats.sample_seconds += pass.sample_seconds;
+    stats.filter_seconds += pass.filter_seconds;
+    stats.insert_seconds += pass.insert_seconds;
+    stats.points_settled_in_partitions += pass.settled_in_partitions;
+    for(const auto& attempt : pass.attempts) stats.partitioned_attempts += attempt.partitions > 1 ? 1 : 0;
   }
   stats.refinement_seconds = seconds_since(t1);
   on_mesh(static_cast<const Constrained_mesh&>(cm));

@@ -33,7 +33,10 @@ namespace Fast_Delaunay_triangulation_3_internal {
 // tetrahedron is (p, a, b, c).
 constexpr int facet_vertex[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
-enum class Insertion_result { inserted, duplicate, aborted };
+// aborted: the point met another partition (or its partition's slots ran
+// out) and is tried again later; rejected: dropped for good by the caller's
+// own rules (the mesher's refinement), never returned by the Delaunay kernel.
+enum class Insertion_result { inserted, duplicate, aborted, rejected };
 
 // A facet of the cavity boundary: the new tetrahedron (p, v[0], v[1], v[2]),
 // rotated so that a ghost vertex comes last, and the facet code of the
@@ -127,6 +130,9 @@ struct Sequential_ownership
 // the buffer zone) are never modified, so threads never touch the same
 // tetrahedron: an outside neighbour of a cavity shares a facet of three owned
 // vertices with it, hence cannot have three vertices of another partition.
+// The paper's rule (three of four vertices) would not do here: a tetrahedron
+// with two vertices of each of two partitions could be just outside a cavity
+// of each, and the kernel writes its mark and neighbour codes there.
 struct Partition_ownership
 {
   static constexpr bool partitioned = true;
@@ -140,6 +146,23 @@ struct Partition_ownership
            partition_of_vertex[tv[2]] == partition &&
            (tv[3] == ghost_vertex || partition_of_vertex[tv[3]] == partition);
   }
+};
+
+// What a walk does past its step limit.  On a Delaunay triangulation the
+// visibility walk cannot cycle, so the limit is only a guard against a
+// corrupted state (an assertion, then a scan).  A refined mesh with
+// constrained facets is not Delaunay any more and a visibility walk may
+// cycle there: Walk_giving_up stops after a few thousand steps and reports
+// no_tet, and the mesher drops the point.
+struct Walk_to_the_end
+{
+  static constexpr bool gives_up = false;
+  static constexpr std::uint64_t step_limit = 0; // unused: 64 + 8 * slots
+};
+struct Walk_giving_up
+{
+  static constexpr bool gives_up = true;
+  static constexpr std::uint64_t step_limit = 4096;
 };
 
 // Where new tetrahedra slots come from: sequentially, the mesh's free list
@@ -157,10 +180,12 @@ struct Mesh_slots
 // triangulation of dimension 3 with ghost tetrahedra, and the point's vertex
 // record has been written; vertex scratch words are 0 at rest.  The
 // sequential instantiation pays nothing for ownership (owns() is constant).
-template <class Ownership = Sequential_ownership, class Slots = Mesh_slots>
+template <class Ownership = Sequential_ownership, class Slots = Mesh_slots, class Walk = Walk_to_the_end>
 class Delaunay_kernel
 {
 public:
+  static constexpr bool partitioned = Ownership::partitioned;
+
   Delaunay_kernel(Flat_storage& mesh, Insertion_scratch& scratch, Slots slots,
                   const Static_filter& filter = Static_filter(),
                   const Sub_determinant_filter& sub_filter = Sub_determinant_filter(),
@@ -169,6 +194,9 @@ public:
   {}
 
   Slots& slots() { return slots_; }
+  const Insertion_scratch& scratch() const { return s_; }
+  // Whether this kernel may walk through, delete and refill t (t live).
+  bool owns(Tet_id t) const { return ownership_.owns(m_, t); }
 
   // Inserts vertex v.  `hint` is a live tetrahedron where the walk starts; on
   // return it is a tetrahedron near v, or, when the caller passes the point
@@ -223,14 +251,15 @@ public:
   // hull facet sees p strictly.  Visibility walk with a random first facet
   // per step, which cannot cycle forever (Devillers, Pion, Teillaud 2002).
   // Partitioned: no_tet as soon as the walk would enter a tetrahedron the
-  // kernel does not own (the ghost start's real neighbour included).
+  // kernel does not own (the ghost start's real neighbour included); with
+  // Walk_giving_up also no_tet past its step limit.
   Tet_id walk(Tet_id t, const double* p)
   {
     if(m_.is_ghost(t)) t = m_.neighbor(t, 3);
     if(!ownership_.owns(m_, t)) return no_tet;
     Tet_id previous = Tet_id(-1);
     std::uint64_t steps = 0;
-    const std::uint64_t step_limit = 64 + 8 * m_.number_of_slots();
+    const std::uint64_t step_limit = Walk::gives_up ? Walk::step_limit : 64 + 8 * m_.number_of_slots();
     for(;;) {
       if(m_.is_ghost(t)) break;
       const Vertex_id* tv = m_.vertex_ids(t);
@@ -267,7 +296,7 @@ public:
       if(!ownership_.owns(m_, next)) return no_tet;
       previous = t;
       t = next;
-      if(++steps > step_limit) return locate_by_scan(p);
+      if(++steps > step_limit) return Walk::gives_up ? no_tet : locate_by_scan(p);
     }
     s_.stats.walk_steps += steps;
     return t;
@@ -310,8 +339,9 @@ public:
   // DELAUNAYBALL on a hole the caller chose (CGAL's insert_in_hole): the
   // distinct live tetrahedra cells[0..n), star-shaped from vertex v's point,
   // are replaced by v joined to their boundary facets.  No test on p: the
-  // hole need not be the conflict zone.
-  void fill_hole(Vertex_id v, const Tet_id* cells, std::size_t n)
+  // hole need not be the conflict zone.  False, with the mesh as before, only
+  // when a partition's slot supply cannot provide the extra tetrahedra.
+  bool fill_hole(Vertex_id v, const Tet_id* cells, std::size_t n)
   {
     s_.cavity.resize(n);
     std::copy(cells, cells + n, s_.cavity.begin());
@@ -326,10 +356,12 @@ public:
       for(int f = 0; f < 4; ++f)
         if(m_.is_live(m_.neighbor(t, f))) s_.boundary_inner.push_back(facet_code(t, f));
     complete_boundary();
-    const bool filled = delaunay_ball(v);
-    CGAL_assertion(filled); // the mesh's own slots never run out
-    (void)filled;
+    if(!delaunay_ball(v)) {
+      ++s_.stats.aborted;
+      return false;
+    }
     ++s_.stats.inserted;
+    return true;
   }
 
 private:

@@ -22,6 +22,10 @@
 // input, seed and partition count, whatever the thread count.  Tasks run in
 // the caller's TBB arena, so tbb::global_control and tbb::task_arena limit
 // the threads as they do for CGAL's parallel triangulation.
+//
+// What happens to one point is a policy (Delaunay_point_insertion: the
+// kernel's insert); the mesher's refinement (paper §4) passes its own, with
+// constrained, star-shaped cavities, and reuses everything else here.
 
 #ifndef CGAL_FDT3_INTERNAL_PARALLEL_INSERTION_H
 #define CGAL_FDT3_INTERNAL_PARALLEL_INSERTION_H
@@ -74,10 +78,38 @@ struct Partition_slots
   void give(Tet_id t) { free->push_back(t); }
 };
 
+// The per-point step of Partitioned_insertion, here the Delaunay kernel's.
+// A policy provides
+//   Kernel<Ownership, Slots>   the kernel a partition (or the sequential
+//                              finish) runs;
+//   prepare(partitions, slots) called before the kernels run: room for
+//                              `partitions` concurrent users and per-slot
+//                              data for `slots` tetrahedron slots;
+//   insert(kernel, partition, v, hint, duplicate_of, next)
+//                              one point, inside a task: may only touch what
+//                              the kernel owns; `aborted` means try again
+//                              in a later attempt; `next` is the point that
+//                              follows v in its run (or null).
+struct Delaunay_point_insertion
+{
+  template <class Ownership, class Slots>
+  using Kernel = Delaunay_kernel<Ownership, Slots>;
+
+  void prepare(int, std::size_t) {}
+
+  template <class K>
+  Insertion_result insert(K& kernel, int, Vertex_id v, Tet_id& hint, Vertex_id& duplicate_of, const double* next)
+  {
+    return kernel.insert(v, hint, duplicate_of, next);
+  }
+};
+
 class Partitioned_insertion
 {
 public:
-  static constexpr std::size_t min_points_per_partition = 3000;
+  // Paper §3.4's threshold; a setter lowers it where batches are small
+  // (the mesher's tests, to run the partitions at all).
+  static constexpr std::size_t default_min_points_per_partition = 3000;
   static constexpr std::size_t retry_mesh_ratio = 32;
   // Fresh tetrahedron slots reserved per point of a partition: a Delaunay
   // tetrahedralization has about 6.7 tetrahedra per vertex, so 7 leaves a
@@ -105,9 +137,20 @@ public:
               std::vector<Vertex_id>& duplicate_of, Tet_id& hint, std::vector<Partition_round>& rounds,
               Kernel_statistics& stats)
   {
+    Delaunay_point_insertion delaunay;
+    insert(std::move(points), partitions, first_new, duplicate_of, hint, rounds, stats, delaunay);
+  }
+
+  // The same with another per-point step (see Delaunay_point_insertion);
+  // a point the policy rejects counts as settled, like an inserted one.
+  template <class Policy>
+  void insert(std::vector<Vertex_id> points, int partitions, Vertex_id first_new,
+              std::vector<Vertex_id>& duplicate_of, Tet_id& hint, std::vector<Partition_round>& rounds,
+              Kernel_statistics& stats, Policy& policy)
+  {
     int attempt = 0;
     while(!points.empty()) {
-      while(partitions > 1 && points.size() < min_points_per_partition * std::size_t(partitions))
+      while(partitions > 1 && points.size() < min_points_per_partition_ * std::size_t(partitions))
         partitions /= 2;
       // A retry pays a fixed price proportional to the mesh (the partition of
       // every mesh vertex is recomputed) and gains at most a share of its few
@@ -119,12 +162,12 @@ public:
       row.mesh_vertices = vertices_in_mesh_;
       const auto t0 = std::chrono::steady_clock::now();
       if(partitions <= 1) {
-        insert_sequentially(points, first_new, duplicate_of, hint, stats);
+        insert_sequentially(points, first_new, duplicate_of, hint, stats, policy);
         row.inserted = row.points;
         points.clear();
       } else {
         std::vector<Vertex_id> failed;
-        insert_partitioned(points, partitions, attempt++, first_new, duplicate_of, failed, stats);
+        insert_partitioned(points, partitions, attempt++, first_new, duplicate_of, failed, stats, policy);
         row.inserted = points.size() - failed.size();
         points.swap(failed);
         if(5 * row.inserted < row.points) partitions /= 2;
@@ -137,12 +180,45 @@ public:
   }
 
   void set_vertices_in_mesh(std::size_t n) { vertices_in_mesh_ = n; }
+  void set_min_points_per_partition(std::size_t n) { min_points_per_partition_ = std::max<std::size_t>(n, 1); }
 
 private:
-  void insert_sequentially(const std::vector<Vertex_id>& points, Vertex_id first_new,
-                           std::vector<Vertex_id>& duplicate_of, Tet_id& hint, Kernel_statistics& stats)
+  // Algorithm 1's loop over points[begin, end) with one kernel; the points
+  // the kernel could not take go to `failures`.  Each insertion also sees
+  // the next point, which the Delaunay kernel's hint aims at.
+  template <class Policy, class Kernel>
+  void insert_run(Policy& policy, Kernel& kernel, int partition, const Vertex_id* begin, const Vertex_id* end,
+                  Vertex_id first_new, std::vector<Vertex_id>& duplicate_of, Tet_id& hint,
+                  std::vector<Vertex_id>& failures) const
   {
-    insert_in_order(m_, points, first_new, duplicate_of, hint, filter_, sub_filter_, timed_, stats);
+    for(const Vertex_id* v = begin; v != end; ++v) {
+      const double* next = v + 1 != end ? m_.point(v[1]) : nullptr;
+      Vertex_id existing = ghost_vertex;
+      const Insertion_result r =
+          hint == no_tet ? Insertion_result::aborted : policy.insert(kernel, partition, *v, hint, existing, next);
+      if(r == Insertion_result::duplicate) duplicate_of[*v - first_new] = existing;
+      else if(r == Insertion_result::aborted) failures.push_back(*v);
+    }
+  }
+
+  template <class Policy>
+  void insert_sequentially(const std::vector<Vertex_id>& points, Vertex_id first_new,
+                           std::vector<Vertex_id>& duplicate_of, Tet_id& hint, Kernel_statistics& stats,
+                           Policy& policy)
+  {
+    policy.prepare(1, m_.number_of_slots());
+    Insertion_scratch scratch;
+    scratch.timed = timed_;
+    typename Policy::template Kernel<Sequential_ownership, Mesh_slots> kernel(m_, scratch, Mesh_slots{&m_},
+                                                                              filter_, sub_filter_);
+    if(!m_.is_live(hint)) hint = m_.first_live_tet();
+    std::vector<Vertex_id> failures;
+    insert_run(policy, kernel, 0, points.data(), points.data() + points.size(), first_new, duplicate_of, hint,
+               failures);
+    CGAL_assertion(failures.empty()); // only a partition aborts
+    m_.live_tets += scratch.live_delta;
+    m_.ghost_tets += scratch.ghost_delta;
+    stats.add(scratch.stats);
   }
 
   // Moore keys on a transformed grid (§3.3): attempt 0 uses the plain curve;
@@ -165,9 +241,10 @@ private:
     return c;
   }
 
+  template <class Policy>
   void insert_partitioned(const std::vector<Vertex_id>& points, int partitions, int attempt,
                           Vertex_id first_new, std::vector<Vertex_id>& duplicate_of,
-                          std::vector<Vertex_id>& failed, Kernel_statistics& stats)
+                          std::vector<Vertex_id>& failed, Kernel_statistics& stats, Policy& policy)
   {
     // Keys of the points to insert, sorted; cut into equal runs at key changes.
     const int bits = 16;
@@ -199,6 +276,10 @@ private:
     }
     cut[partitions] = items.size();
     first_key[partitions] = key_mask + 1;
+    // The points alone, in curve order: a quarter of the keyed items' bytes.
+    std::vector<Vertex_id> sorted(items.size());
+    for(std::size_t i = 0; i < items.size(); ++i) sorted[i] = items[i].value;
+    std::vector<Key_value<std::uint32_t>>().swap(items);
 
     // The partition of every vertex that may be in a tetrahedron.
     partition_of_vertex_.resize(m_.vertices.size());
@@ -219,8 +300,9 @@ private:
     for(int j = 0; j < partitions; ++j)
       fresh_begin[j + 1] = fresh_begin[j] + fresh_slots_per_point * (cut[j + 1] - cut[j]) + 4096;
     resize_cell_arrays(fresh_begin[partitions]);
+    policy.prepare(partitions, fresh_begin[partitions]);
 
-    std::vector<Tet_id> hints = owned_start_tets(partitions);
+    std::vector<Tet_id> hints = owned_start_tets(partitions, fresh_begin[0]);
     std::vector<std::vector<Tet_id>> free_lists(partitions);
     for(std::size_t k = 0; k < m_.free_tets.size(); ++k)
       free_lists[k % partitions].push_back(m_.free_tets[k]);
@@ -235,19 +317,12 @@ private:
       Partition_ownership ownership;
       ownership.partition_of_vertex = partition_of_vertex_.data();
       ownership.partition = static_cast<std::uint8_t>(j);
-      Delaunay_kernel<Partition_ownership, Partition_slots> kernel(
+      typename Policy::template Kernel<Partition_ownership, Partition_slots> kernel(
           m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1]}, filter_,
           sub_filter_, ownership);
       Tet_id hint = hints[j];
-      for(std::size_t i = cut[j]; i < cut[j + 1]; ++i) {
-        const Vertex_id v = items[i].value;
-        const double* next = i + 1 < cut[j + 1] ? m_.point(items[i + 1].value) : nullptr;
-        Vertex_id existing = ghost_vertex;
-        const Insertion_result r =
-            hint == no_tet ? Insertion_result::aborted : kernel.insert(v, hint, existing, next);
-        if(r == Insertion_result::duplicate) duplicate_of[v - first_new] = existing;
-        else if(r == Insertion_result::aborted) failures[j].push_back(v);
-      }
+      insert_run(policy, kernel, j, sorted.data() + cut[j], sorted.data() + cut[j + 1], first_new, duplicate_of,
+                 hint, failures[j]);
       next_fresh[j] = kernel.slots().next_fresh;
     });
 
@@ -278,14 +353,16 @@ private:
 
   // A live tetrahedron owned by each partition (no_tet if none), found by one
   // sequential scan before the tasks start, so that no task reads cells
-  // another task is rewriting.
-  std::vector<Tet_id> owned_start_tets(int partitions) const
+  // another task is rewriting.  Only the slots below `end` hold cells: the
+  // fresh ranges above are unwritten (a partition that owns nothing made the
+  // scan run into them and read garbage vertex ids).
+  std::vector<Tet_id> owned_start_tets(int partitions, Tet_id end) const
   {
     std::vector<Tet_id> hints(partitions, no_tet);
     int missing = partitions;
     Partition_ownership ownership;
     ownership.partition_of_vertex = partition_of_vertex_.data();
-    for(Tet_id t = 0; t < m_.number_of_slots() && missing > 0; ++t) {
+    for(Tet_id t = 0; t < end && missing > 0; ++t) {
       if(!m_.is_live(t)) continue;
       const std::uint8_t j = partition_of_vertex_[m_.vertex(t, 0)];
       if(hints[j] != no_tet) continue;
@@ -305,6 +382,7 @@ private:
   std::uint64_t seed_;
   bool timed_;
   std::size_t vertices_in_mesh_ = 0;
+  std::size_t min_points_per_partition_ = default_min_points_per_partition;
   std::vector<std::uint8_t> partition_of_vertex_;
 };
 

@@ -173,8 +173,7 @@ inline double in_sphere_determinant(const double* p, const double* q, const doub
 // walk the four facet orientations ~5 times.  The vectorised forms use the
 // same minors and the same sums as the scalar ones (only the association of
 // the final sum and the FMA contractions differ), so the error bounds of the
-// filters hold unchanged.  The scratch lanes leave in the transpose, before
-// any arithmetic.
+// filters hold unchanged.
 namespace simd_records {
 
 struct Columns

@@ -278,7 +278,9 @@ public:
     const Vertex_id v = append_vertex(p);
     Insertion_scratch scratch;
     Delaunay_kernel<> kernel = sequential_kernel(scratch);
-    kernel.fill_hole(v, hole, n);
+    const bool filled = kernel.fill_hole(v, hole, n);
+    CGAL_assertion(filled); // the mesh's own slots never run out
+    (void)filled;
     ball = scratch.ball;
     hint_ = ball.front();
     finish_single_insertion(scratch);

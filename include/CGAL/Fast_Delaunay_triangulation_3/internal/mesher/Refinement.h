@@ -15,14 +15,23 @@
 // cavity, and the test repeats.  The cavity also aborts the point when one
 // of its vertices is closer than 0.7 h (§2.4's modified cavity).
 //
-// This milestone inserts each batch sequentially with the kernel's
-// DELAUNAYBALL (Delaunay_kernel::fill_hole); the batches are what the
-// partitioned engine will take.
+// A batch goes through the partitioned engine of §3 (Parallel_insertion.h)
+// with its own per-point step, Constrained_point_insertion: the kernel's
+// WALK (one that gives up, the mesh not being Delaunay), the constrained
+// star-shaped cavity, then the kernel's DELAUNAYBALL (fill_hole).  A
+// partition owns the tetrahedra whose vertices are all in it (the engine's
+// rule, stricter than the paper's three of four: see Partition_ownership);
+// a point whose walk leaves them, or whose cavity reaches another one, is
+// tried again with new partitions, and the last ones sequentially
+// (§3.3-§3.4).  Points dropped by the rules above are dropped whatever the
+// partitions.  The mesh depends on the thread count (the partitions), never
+// on the scheduling.
 
 #ifndef CGAL_FDT3_INTERNAL_MESHER_REFINEMENT_H
 #define CGAL_FDT3_INTERNAL_MESHER_REFINEMENT_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Constrained_mesh.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Sizing.h>
 
@@ -33,7 +42,6 @@
 #include <functional>
 #include <limits>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -45,13 +53,22 @@ struct Refinement_options
   double radius_ratio = 1.4;   // refine when circumradius > radius_ratio * h
   double min_edge_ratio = 0.7; // no new edge shorter than min_edge_ratio * h
   int max_passes = 200;
+  // Moore partitions of a batch (paper §3); 1 inserts it sequentially.
+  int threads = 1;
+  // Fewer points per partition halve the partitions (§3.4's 3000).
+  std::size_t min_points_per_thread = Partitioned_insertion::default_min_points_per_partition;
 };
 
 struct Refinement_pass
 {
+  // aborted: filtered points the insertion dropped (edge filter, star
+  // shape, subdomain, walk), whatever the partitions.
   std::size_t candidates = 0, filtered_out = 0, aborted = 0, inserted = 0;
+  std::size_t settled_in_partitions = 0; // points inserted or dropped by attempts with several partitions
+  std::vector<Partition_round> attempts;  // the engine's attempts (paper Table 2)
   std::size_t tetrahedra = 0; // live finite tetrahedra inside the volumes after the pass
   double seconds = 0;
+  double sample_seconds = 0, filter_seconds = 0, insert_seconds = 0; // parts of `seconds`
 };
 
 // A refinement point: where, its size, the tetrahedron that contains it
@@ -87,11 +104,169 @@ inline bool circumcentre(const double* a, const double* b, const double* c, cons
   return true;
 }
 
+// One refinement point into the mesh, as the partitioned engine's per-point
+// step (see Delaunay_point_insertion).  Vertex v is point v - first_new of
+// the batch.  Inside a task it reads and writes only what its kernel owns:
+// the tetrahedra of its partition and their neighbours, whose slots are its
+// own (Partition_ownership), and their subdomain and constrained entries.
+class Constrained_point_insertion
+{
+public:
+  template <class Ownership, class Slots>
+  using Kernel = Delaunay_kernel<Ownership, Slots, Walk_giving_up>;
+
+  Constrained_point_insertion(Constrained_mesh& cm, double min_edge_ratio,
+                              const std::vector<Refinement_point>& batch, Vertex_id first_new)
+      : cm_(cm), min_edge_ratio_(min_edge_ratio), batch_(batch), first_new_(first_new),
+        inserted_(batch.size(), 0)
+  {}
+
+  bool inserted(std::size_t i) const { return inserted_[i] != 0; }
+
+  void prepare(int partitions, std::size_t slots)
+  {
+    CGAL_assertion(slots == cm_.mesh.number_of_slots());
+    (void)slots;
+    cm_.fit_slot_arrays();
+    if(cavities_.size() < std::size_t(partitions)) cavities_.resize(partitions);
+  }
+
+  // `next` is not used: the hint is the new ball's first tetrahedron, and
+  // sequentially the walk starts where the point was sampled.
+  template <class K>
+  Insertion_result insert(K& kernel, int partition, Vertex_id v, Tet_id& hint, Vertex_id&, const double*)
+  {
+    const Flat_storage& m = cm_.mesh;
+    const Refinement_point& r = batch_[v - first_new_];
+    // The tetrahedron the point was sampled in is the best start, but in a
+    // task its slot may be another partition's: only sequentially.
+    Tet_id start = !K::partitioned && m.is_live(r.containing) ? r.containing : hint;
+    start = kernel.walk(start, r.p);
+    if(start == no_tet) return K::partitioned ? Insertion_result::aborted : Insertion_result::rejected;
+    if(m.is_ghost(start) || cm_.subdomain[start] != r.subdomain) return Insertion_result::rejected;
+    std::vector<Tet_id>& cavity = cavities_[partition];
+    const Insertion_result found = constrained_cavity(kernel, start, r, cavity);
+    if(found != Insertion_result::inserted) return found;
+    if(!kernel.fill_hole(v, cavity.data(), cavity.size())) return Insertion_result::aborted;
+    inherit_flags<K>(kernel.scratch(), r.subdomain);
+    hint = kernel.scratch().ball.front();
+    inserted_[v - first_new_] = 1;
+    return Insertion_result::inserted;
+  }
+
+private:
+  // The new tetrahedra are in the cavity's subdomain; facet 0 of each is a
+  // cavity boundary facet and is constrained when the outside one was; the
+  // other facets contain the new point, never on the surface.  In a task the
+  // per-slot arrays were sized by prepare() for every slot it may take.
+  template <class K>
+  void inherit_flags(const Insertion_scratch& s, int subdomain)
+  {
+    if(!K::partitioned) cm_.fit_slot_arrays();
+    for(std::size_t k = 0; k < s.ball.size(); ++k) {
+      const Tet_id t = s.ball[k];
+      CGAL_assertion(t < cm_.subdomain.size());
+      const Facet_code outside = s.boundary[k].outside;
+      cm_.subdomain[t] = subdomain;
+      cm_.constrained[t] = cm_.is_constrained(tet_of(outside), facet_of(outside)) ? 1 : 0;
+    }
+  }
+
+  // Vertex i of a tetrahedron that may carry the cavity mark.
+  Vertex_id vertex(Tet_id t, int i) const { return cm_.mesh.vertex(t, i) & ~mark_bit; }
+
+  bool has_close_vertex(Tet_id t, const Refinement_point& r) const
+  {
+    const double too_close = min_edge_ratio_ * r.h;
+    for(int i = 0; i < 4; ++i) {
+      const double* w = cm_.mesh.point(vertex(t, i));
+      if(distance(w, r.p) < too_close || same_point(w, r.p)) return true;
+    }
+    return false;
+  }
+
+  // CAVITY with constraints, then made star-shaped.  The cavity is carried
+  // by the kernel's mark (a live tetrahedron's neighbours are live, so a
+  // marked neighbour is in the cavity).  Returns `inserted` with the cavity
+  // in `cavity` and no mark left; otherwise, with no mark left either,
+  // `aborted` (it reached a tetrahedron the kernel does not own) or
+  // `rejected` (a vertex closer than the edge filter allows, no conflict, or
+  // the start tetrahedron not star-shaped from the point).
+  template <class K>
+  Insertion_result constrained_cavity(const K& kernel, Tet_id start, const Refinement_point& r,
+                                      std::vector<Tet_id>& cavity)
+  {
+    Flat_storage& m = cm_.mesh;
+    cavity.clear();
+    // Before any conflict test: a point equal to a vertex of `start` (the
+    // only vertices it can equal) has no perturbed conflict status.
+    if(has_close_vertex(start, r) || !kernel.in_conflict(start, r.p)) return Insertion_result::rejected;
+    m.mark_free(start);
+    cavity.push_back(start);
+    Insertion_result result = Insertion_result::inserted;
+    for(std::size_t k = 0; k < cavity.size() && result == Insertion_result::inserted; ++k) {
+      const Tet_id t = cavity[k];
+      for(int f = 0; f < 4; ++f) {
+        if(cm_.is_constrained(t, f)) continue;
+        const Tet_id u = m.neighbor(t, f);
+        if(!m.is_live(u) || !kernel.in_conflict(u, r.p)) continue;
+        CGAL_assertion(!m.is_ghost(u) && cm_.subdomain[u] == r.subdomain);
+        if(!kernel.owns(u)) result = Insertion_result::aborted;
+        else if(has_close_vertex(u, r)) result = Insertion_result::rejected;
+        if(result != Insertion_result::inserted) break;
+        m.mark_free(u);
+        cavity.push_back(u);
+      }
+    }
+    if(result == Insertion_result::inserted && !make_star_shaped(start, r.p, cavity))
+      result = Insertion_result::rejected;
+    for(Tet_id t : cavity) m.unmark_free(t);
+    return result;
+  }
+
+  // The paper's rule: drop every tetrahedron with a boundary facet that
+  // does not see p strictly, until none is left (false if the start is
+  // dropped).  Dropped tetrahedra lose the mark and leave `cavity`.
+  bool make_star_shaped(Tet_id start, const double* p, std::vector<Tet_id>& cavity)
+  {
+    Flat_storage& m = cm_.mesh;
+    for(bool changed = true; changed;) {
+      changed = false;
+      for(std::size_t k = 0; k < cavity.size();) {
+        const Tet_id t = cavity[k];
+        bool sees_all = true;
+        for(int f = 0; f < 4 && sees_all; ++f) {
+          if(!m.is_live(m.neighbor(t, f))) continue;
+          sees_all = orientation(cm_.filter, p, m.point(vertex(t, facet_vertex[f][0])),
+                                 m.point(vertex(t, facet_vertex[f][1])), m.point(vertex(t, facet_vertex[f][2]))) > 0;
+        }
+        if(sees_all) {
+          ++k;
+          continue;
+        }
+        if(t == start) return false;
+        m.unmark_free(t);
+        cavity[k] = cavity.back();
+        cavity.pop_back();
+        changed = true;
+      }
+    }
+    return true;
+  }
+
+  Constrained_mesh& cm_;
+  double min_edge_ratio_;
+  const std::vector<Refinement_point>& batch_;
+  Vertex_id first_new_;
+  std::vector<std::uint8_t> inserted_;       // per batch point, written by the task that inserts it
+  std::vector<std::vector<Tet_id>> cavities_; // per partition
+};
+
 class Constrained_refinement
 {
 public:
   Constrained_refinement(Constrained_mesh& cm, const Refinement_options& options)
-      : cm_(cm), options_(options), kernel_(cm.mesh, scratch_, Mesh_slots{&cm.mesh}, cm.filter)
+      : cm_(cm), options_(options)
   {}
 
   // Runs passes until no point is inserted; `progress` sees every pass.
@@ -104,9 +279,15 @@ public:
       Refinement_pass pass;
       std::vector<Refinement_point> points = sample_points();
       pass.candidates = points.size();
+      const Clock::time_point t1 = Clock::now();
       filter_points(points);
       pass.filtered_out = pass.candidates - points.size();
+      const Clock::time_point t2 = Clock::now();
       insert_points(points, pass);
+      const Clock::time_point t3 = Clock::now();
+      pass.sample_seconds = std::chrono::duration<double>(t1 - t0).count();
+      pass.filter_seconds = std::chrono::duration<double>(t2 - t1).count();
+      pass.insert_seconds = std::chrono::duration<double>(t3 - t2).count();
       CGAL_assertion_code(std::string why;)
       CGAL_assertion_msg(cm_.is_valid(&why), why.c_str());
       pass.tetrahedra = count_volume_tetrahedra();
@@ -129,12 +310,32 @@ private:
 
   // SAMPLEPOINTS: circumcentres of large tetrahedra that fall in their own
   // subdomain (a centre beyond the surface would need the surface split,
-  // which this mesher never does).
+  // which this mesher never does).  The slots are cut into one run per
+  // thread, each sampled with its own walk (the mesh is only read), and the
+  // runs' points joined in slot order.
   std::vector<Refinement_point> sample_points()
   {
-    const Flat_storage& m = cm_.mesh;
+    const std::size_t slots = cm_.mesh.number_of_slots();
+    const int chunks = chunk_count(slots, std::max(1, options_.threads));
+    // One walk state per run, kept from pass to pass: one thread samples
+    // exactly as the sequential mesher always did.
+    if(walk_scratches_.size() < std::size_t(chunks)) walk_scratches_.resize(chunks);
+    std::vector<std::vector<Refinement_point>> found(chunks);
+    for_each_chunk(chunks, [&](int c) {
+      sample_slots(chunk_begin(slots, chunks, c), chunk_begin(slots, chunks, c + 1), walk_scratches_[c], found[c]);
+    });
     std::vector<Refinement_point> points;
-    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+    for(const std::vector<Refinement_point>& run : found) points.insert(points.end(), run.begin(), run.end());
+    return points;
+  }
+
+  void sample_slots(Tet_id begin, Tet_id end, Insertion_scratch& scratch, std::vector<Refinement_point>& points)
+  {
+    const Flat_storage& m = cm_.mesh;
+    // The kernel's walk, sequential: it reads the mesh and writes only `scratch`.
+    Delaunay_kernel<Sequential_ownership, Mesh_slots, Walk_giving_up> walker(cm_.mesh, scratch, Mesh_slots{&cm_.mesh},
+                                                                            cm_.filter);
+    for(Tet_id t = begin; t < end; ++t) {
       if(!m.is_live(t) || cm_.subdomain[t] <= 0) continue;
       const Vertex_id* tv = m.vertex_ids(t);
       const double* w[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
@@ -145,7 +346,7 @@ private:
       if(radius <= options_.radius_ratio * h_mean) continue;
       // Outside the input's box the static filters do not hold (and the
       // centre is outside every volume anyway): no walk there.
-      Tet_id u = cm_.in_box(r.p) ? walk(t, r.p) : no_tet;
+      Tet_id u = cm_.in_box(r.p) ? walker.walk(t, r.p) : no_tet;
       if(u == no_tet || m.is_ghost(u) || cm_.subdomain[u] != cm_.subdomain[t]) {
         // The centre lies beyond the surface, which is never split: the
         // centroid, inside t, refines t instead (the corners of a cube
@@ -159,7 +360,6 @@ private:
       r.subdomain = cm_.subdomain[t];
       points.push_back(r);
     }
-    return points;
   }
 
   // FILTERPOINTS: greedy in sampling order with a hash grid whose cells are
@@ -171,11 +371,7 @@ private:
     double cell = std::numeric_limits<double>::infinity();
     for(const Refinement_point& r : points) cell = std::min(cell, options_.min_edge_ratio * r.h);
     auto cell_of = [cell](double x) { return static_cast<std::int64_t>(std::floor(x / cell)); };
-    auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
-      return (static_cast<std::uint64_t>(i) * 73856093u) ^ (static_cast<std::uint64_t>(j) * 19349663u) ^
-             (static_cast<std::uint64_t>(k) * 83492791u);
-    };
-    std::unordered_multimap<std::uint64_t, std::size_t> grid;
+    Cell_lists grid(points.size());
     std::vector<Refinement_point> kept;
     for(const Refinement_point& r : points) {
       const double radius = options_.min_edge_ratio * r.h;
@@ -184,172 +380,126 @@ private:
       bool too_close = false;
       for(std::int64_t i = ci - reach; i <= ci + reach && !too_close; ++i)
         for(std::int64_t j = cj - reach; j <= cj + reach && !too_close; ++j)
-          for(std::int64_t k = ck - reach; k <= ck + reach && !too_close; ++k) {
-            auto range = grid.equal_range(key(i, j, k));
-            for(auto it = range.first; it != range.second; ++it)
-              if(distance(kept[it->second].p, r.p) < radius) {
-                too_close = true;
-                break;
-              }
-          }
+          for(std::int64_t k = ck - reach; k <= ck + reach && !too_close; ++k)
+            for(std::uint32_t q = grid.first({i, j, k}); q != Cell_lists::none && !too_close; q = grid.next(q))
+              too_close = distance(kept[q].p, r.p) < radius;
       if(too_close) continue;
-      grid.emplace(key(ci, cj, ck), kept.size());
+      grid.add({ci, cj, ck}, static_cast<std::uint32_t>(kept.size()));
       kept.push_back(r);
     }
     points.swap(kept);
   }
 
+  // The accepted points of FILTERPOINTS by grid cell: one linked list per
+  // cell, heads in an open-addressing table.  Replaces a
+  // std::unordered_multimap (one node allocation per point, 27 bucket
+  // searches per candidate) that took about 40% of the refinement.
+  class Cell_lists
+  {
+  public:
+    static constexpr std::uint32_t none = std::uint32_t(-1);
+    struct Cell { std::int64_t i, j, k; };
+
+    explicit Cell_lists(std::size_t points)
+    {
+      std::size_t capacity = 16;
+      while(capacity < 2 * points) capacity *= 2;
+      slots_.assign(capacity, Slot{{0, 0, 0}, none});
+    }
+
+    std::uint32_t first(const Cell& c) const { return slots_[find(c)].head; }
+    std::uint32_t next(std::uint32_t q) const { return next_[q]; }
+
+    // Point q (numbered in order from 0) joins cell c.
+    void add(const Cell& c, std::uint32_t q)
+    {
+      CGAL_precondition(q == next_.size() && next_.size() < slots_.size() / 2);
+      Slot& slot = slots_[find(c)];
+      slot.cell = c;
+      next_.push_back(slot.head);
+      slot.head = q;
+    }
+
+  private:
+    struct Slot { Cell cell; std::uint32_t head; };
+
+    // The slot of c, or the empty slot where c would go (the table is at
+    // most half full, so there is one).
+    std::size_t find(const Cell& c) const
+    {
+      const std::size_t mask = slots_.size() - 1;
+      std::size_t h = ((static_cast<std::uint64_t>(c.i) * 73856093u) ^ (static_cast<std::uint64_t>(c.j) * 19349663u) ^
+                       (static_cast<std::uint64_t>(c.k) * 83492791u)) * 0x9e3779b97f4a7c15ull >> 20;
+      for(;; ++h) {
+        const Slot& s = slots_[h & mask];
+        if(s.head == none || (s.cell.i == c.i && s.cell.j == c.j && s.cell.k == c.k)) return h & mask;
+      }
+    }
+
+    std::vector<Slot> slots_;
+    std::vector<std::uint32_t> next_;
+  };
+
+  // INSERTPOINTS: every point gets its vertex record first (the engine
+  // partitions vertices by their records), then the engine inserts them.
   void insert_points(const std::vector<Refinement_point>& points, Refinement_pass& pass)
   {
-    Tet_id hint = cm_.mesh.first_live_tet();
-    for(const Refinement_point& r : points) {
-      if(insert_point(r, hint)) ++pass.inserted;
-      else ++pass.aborted;
+    Flat_storage& m = cm_.mesh;
+    const Vertex_id first_new = static_cast<Vertex_id>(m.vertices.size());
+    std::vector<Vertex_id> ids(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i) {
+      Vertex_record record;
+      record.xyz[0] = points[i].p[0]; record.xyz[1] = points[i].p[1]; record.xyz[2] = points[i].p[2];
+      record.scratch = 0;
+      m.vertices.push_back(record);
+      cm_.size.push_back(points[i].h);
+      ids[i] = first_new + static_cast<Vertex_id>(i);
     }
-    cm_.mesh.live_tets += scratch_.live_delta;
-    cm_.mesh.ghost_tets += scratch_.ghost_delta;
-    scratch_.live_delta = scratch_.ghost_delta = 0;
+    Constrained_point_insertion policy(cm_, options_.min_edge_ratio, points, first_new);
+    Partitioned_insertion engine(m, cm_.filter, Sub_determinant_filter(), cm_.box_lo, cm_.box_hi, 0, false);
+    engine.set_vertices_in_mesh(first_new);
+    engine.set_min_points_per_partition(options_.min_points_per_thread);
+    std::vector<Vertex_id> duplicate_of(points.size(), ghost_vertex); // never written: no duplicate result
+    Tet_id hint = m.first_live_tet();
+    Kernel_statistics stats;
+    engine.insert(std::move(ids), std::max(1, options_.threads), first_new, duplicate_of, hint, pass.attempts,
+                  stats, policy);
+    for(std::size_t i = 0; i < points.size(); ++i) pass.inserted += policy.inserted(i) ? 1 : 0;
+    pass.aborted = points.size() - pass.inserted;
+    for(const Partition_round& attempt : pass.attempts)
+      if(attempt.partitions > 1) pass.settled_in_partitions += attempt.inserted;
+    drop_unused_vertices(first_new, policy);
   }
 
-  bool insert_point(const Refinement_point& r, Tet_id& hint)
+  // The records of the points left out are in no tetrahedron: the inserted
+  // ones move down over them, and the tetrahedra follow.
+  void drop_unused_vertices(Vertex_id first_new, const Constrained_point_insertion& policy)
   {
     Flat_storage& m = cm_.mesh;
-    Tet_id start = r.containing;
-    if(!m.is_live(start)) start = hint;
-    start = walk(start, r.p);
-    if(start == no_tet || m.is_ghost(start) || cm_.subdomain[start] != r.subdomain) return false;
-    if(!constrained_cavity(start, r)) return false;
-
-    Vertex_record record;
-    record.xyz[0] = r.p[0]; record.xyz[1] = r.p[1]; record.xyz[2] = r.p[2];
-    record.scratch = 0;
-    const Vertex_id v = static_cast<Vertex_id>(m.vertices.size());
-    m.vertices.push_back(record);
-    cm_.size.push_back(r.h);
-    kernel_.fill_hole(v, cavity_.data(), cavity_.size());
-    inherit_flags(r.subdomain);
-    hint = scratch_.ball.front();
-    return true;
-  }
-
-  // The new tetrahedra are in the cavity's subdomain; facet 0 of each is a
-  // cavity boundary facet and is constrained when the outside one was; the
-  // other facets contain the new point, never on the surface.
-  void inherit_flags(int subdomain)
-  {
-    cm_.fit_slot_arrays();
-    for(std::size_t k = 0; k < scratch_.ball.size(); ++k) {
-      const Tet_id t = scratch_.ball[k];
-      const Facet_code outside = scratch_.boundary[k].outside;
-      cm_.subdomain[t] = subdomain;
-      cm_.constrained[t] = cm_.is_constrained(tet_of(outside), facet_of(outside)) ? 1 : 0;
+    const std::size_t n = m.vertices.size() - first_new;
+    std::vector<Vertex_id> renumber(n);
+    Vertex_id next = first_new;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(!policy.inserted(i)) continue;
+      renumber[i] = next;
+      m.vertices[next] = m.vertices[first_new + i];
+      cm_.size[next] = cm_.size[first_new + i];
+      ++next;
     }
-  }
-
-  // Stochastic visibility walk (random first facet per step) to a
-  // tetrahedron whose closure holds p, or a ghost beyond whose hull facet p
-  // lies.  Once the mesh is not Delaunay any more a visibility walk may
-  // cycle (the termination proof needs the Delaunay property), so it gives
-  // up after a number of steps: no_tet, and the caller drops the point.
-  Tet_id walk(Tet_id t, const double* p)
-  {
-    const Flat_storage& m = cm_.mesh;
-    const int max_steps = 4096;
-    Tet_id previous = no_tet;
-    for(int step = 0; step < max_steps; ++step) {
-      if(m.is_ghost(t)) return t;
-      const Vertex_id* tv = m.vertex_ids(t);
-      const double* w[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
-      const int first = static_cast<int>(scratch_.next_random() & 3);
-      Tet_id next = no_tet;
-      for(int k = 0; k < 4 && next == no_tet; ++k) {
-        const int f = (first + k) & 3;
-        const Tet_id u = m.neighbor(t, f);
-        if(u == previous) continue;
-        const double* q[4] = {w[0], w[1], w[2], w[3]};
-        q[f] = p;
-        if(orientation(cm_.filter, q[0], q[1], q[2], q[3]) < 0) next = u;
-      }
-      if(next == no_tet) return t;
-      previous = t;
-      t = next;
-    }
-    return no_tet;
-  }
-
-  bool in_cavity(Tet_id t) const { return t < stamp_.size() && stamp_[t] == current_stamp_; }
-
-  // CAVITY with constraints, then made star-shaped.  Leaves the cavity in
-  // cavity_ and returns true, or returns false to abort the point.
-  bool constrained_cavity(Tet_id start, const Refinement_point& r)
-  {
-    const Flat_storage& m = cm_.mesh;
-    stamp_.resize(m.number_of_slots(), 0);
-    ++current_stamp_;
-    cavity_.clear();
-    const double too_close = options_.min_edge_ratio * r.h;
-    // Before any conflict test: a point equal to a vertex of `start` (the
-    // only vertices it can equal) has no perturbed conflict status.
-    for(int i = 0; i < 4; ++i)
-      if(distance(m.point(m.vertex(start, i)), r.p) < too_close || same_point(m.point(m.vertex(start, i)), r.p))
-        return false;
-    if(!kernel_.in_conflict(start, r.p)) return false;
-    stamp_[start] = current_stamp_;
-    cavity_.push_back(start);
-    for(std::size_t k = 0; k < cavity_.size(); ++k) {
-      const Tet_id t = cavity_[k];
+    if(next == first_new + n) return;
+    m.vertices.resize(next);
+    cm_.size.resize(next);
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+      if(!m.is_live(t)) continue;
+      Vertex_id* tv = m.vertex_ids(t);
       for(int i = 0; i < 4; ++i)
-        if(distance(m.point(m.vertex(t, i)), r.p) < too_close) return false;
-      for(int f = 0; f < 4; ++f) {
-        if(cm_.is_constrained(t, f)) continue;
-        const Tet_id u = m.neighbor(t, f);
-        if(in_cavity(u)) continue;
-        CGAL_assertion(!m.is_ghost(u) && cm_.subdomain[u] == r.subdomain);
-        if(!kernel_.in_conflict(u, r.p)) continue;
-        stamp_[u] = current_stamp_;
-        cavity_.push_back(u);
-      }
+        if(tv[i] >= first_new && tv[i] != ghost_vertex) tv[i] = renumber[tv[i] - first_new];
     }
-    return make_star_shaped(start, r.p);
-  }
-
-  // The paper's rule: drop every tetrahedron with a boundary facet that
-  // does not see p strictly, until none is left (or the start is dropped).
-  bool make_star_shaped(Tet_id start, const double* p)
-  {
-    const Flat_storage& m = cm_.mesh;
-    for(bool changed = true; changed;) {
-      changed = false;
-      for(std::size_t k = 0; k < cavity_.size();) {
-        const Tet_id t = cavity_[k];
-        bool sees_all = true;
-        for(int f = 0; f < 4 && sees_all; ++f) {
-          if(in_cavity(m.neighbor(t, f))) continue;
-          const Vertex_id* tv = m.vertex_ids(t);
-          sees_all = orientation(cm_.filter, p, m.point(tv[facet_vertex[f][0]]), m.point(tv[facet_vertex[f][1]]),
-                                 m.point(tv[facet_vertex[f][2]])) > 0;
-        }
-        if(sees_all) {
-          ++k;
-          continue;
-        }
-        if(t == start) return false;
-        stamp_[t] = 0;
-        cavity_[k] = cavity_.back();
-        cavity_.pop_back();
-        changed = true;
-      }
-    }
-    return true;
   }
 
   Constrained_mesh& cm_;
   Refinement_options options_;
-  Insertion_scratch scratch_;
-  Delaunay_kernel<> kernel_;
-  std::vector<std::uint32_t> stamp_;
-  std::uint32_t current_stamp_ = 0;
-  std::vector<Tet_id> cavity_;
+  std::vector<Insertion_scratch> walk_scratches_; // SAMPLEPOINTS' walks, one per run of slots
 };
 
 } // namespace mesher
