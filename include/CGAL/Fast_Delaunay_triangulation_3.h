@@ -48,6 +48,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -1567,7 +1568,8 @@ private:
     Locate_type lt;
     int li, lj;
     const Cell_handle c = locate(p, lt, li, lj, hint);
-    CGAL_precondition_msg(lt != OUTSIDE_CONVEX_HULL, "the segment must start in the convex hull");
+    if(lt == OUTSIDE_CONVEX_HULL)
+      throw std::invalid_argument("segment traverser: the segment's source lies outside the convex hull");
     unsigned mask = 15u;
     if(lt == VERTEX) mask = 1u << li;
     else if(lt == EDGE) mask = (1u << li) | (1u << lj);

@@ -322,3 +322,17 @@ TEST(SegmentTraverser, SegmentsLeavingTheHull)
 }
 
 } // namespace
+
+namespace {
+
+TEST(SegmentTraverser, SourceOutsideTheHullThrows)
+{
+  const std::vector<Point> points = grid(3);
+  const Fast_dt T(points.begin(), points.end());
+  EXPECT_THROW(T.segment_traverser_cells_begin(Point(-1, 0.5, 0.5), Point(1, 1, 1)), std::invalid_argument);
+  EXPECT_THROW(T.segment_traverser_simplices(Point(5, 5, 5), Point(6, 6, 6)), std::invalid_argument);
+  // A source on the hull is inside the closed hull.
+  EXPECT_NO_THROW(T.segment_traverser_cell_handles(Point(0, 0.5, 0.5), Point(1, 1, 1)));
+}
+
+} // namespace

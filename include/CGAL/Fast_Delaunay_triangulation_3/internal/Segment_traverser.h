@@ -79,12 +79,13 @@ public:
     Exact t = 0;
     Face at = start;
     for(;;) {
-      Lambdas cell = continuation_cell(at, t);
+      Lambdas cell = continuation_cell(at, t, out.cells.empty() ? Cell_handle() : out.cells.back());
       if(cell.c == Cell_handle()) {
         leave_hull(at, t, out);
         return out;
       }
       const Exact t_out = exit_parameter(cell);
+      CGAL_assertion(t < t_out);
       add_face(out, Face{cell.c, positive_mask(cell, t)});
       add_face(out, Face{cell.c, positive_mask(cell, (t + t_out) / 2)});
       add_face(out, Face{cell.c, positive_mask(cell, t_out)});
@@ -194,10 +195,11 @@ private:
   }
 
   // A null cell when the segment leaves the hull at x(t).
-  Lambdas continuation_cell(const Face& at, const Exact& t) const
+  // The cell just left is skipped: the walk only moves forward.
+  Lambdas continuation_cell(const Face& at, const Exact& t, Cell_handle left) const
   {
     for(Cell_handle c : cells_around(at)) {
-      if(tr_->is_infinite(c)) continue;
+      if(c == left || tr_->is_infinite(c)) continue;
       Lambdas l = lambdas(c);
       if(holds_continuation(l, t)) return l;
     }
@@ -208,7 +210,7 @@ private:
   // last cell that holds the exit face and has q strictly beyond.
   void leave_hull(const Face& at, const Exact& t, Segment_walk_result<Tr>& out) const
   {
-    CGAL_precondition_msg(!out.cells.empty(), "the segment must start in the convex hull");
+    CGAL_assertion(!out.cells.empty());
     const Lambdas last = lambdas(out.cells.back());
     for(int k = 0; k < 4; ++k) {
       const Cell_handle behind = last.c->neighbor(k);
