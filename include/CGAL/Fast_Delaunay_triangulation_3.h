@@ -45,10 +45,10 @@
 #include <cstdint>
 #include <iostream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
-#include <stdexcept>
 #include <vector>
 
 namespace CGAL {

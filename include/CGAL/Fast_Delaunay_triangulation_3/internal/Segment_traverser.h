@@ -81,7 +81,7 @@ public:
     for(;;) {
       Lambdas cell = continuation_cell(at, t, out.cells.empty() ? Cell_handle() : out.cells.back());
       if(cell.c == Cell_handle()) {
-        leave_hull(at, t, out);
+        leave_hull(t, out);
         return out;
       }
       const Exact t_out = exit_parameter(cell);
@@ -208,7 +208,7 @@ private:
 
   // Behind the hull facet through which the segment leaves: one facet of the
   // last cell that holds the exit face and has q strictly beyond.
-  void leave_hull(const Face& at, const Exact& t, Segment_walk_result<Tr>& out) const
+  void leave_hull(const Exact& t, Segment_walk_result<Tr>& out) const
   {
     CGAL_assertion(!out.cells.empty());
     const Lambdas last = lambdas(out.cells.back());
@@ -221,7 +221,6 @@ private:
       return;
     }
     CGAL_assertion(false);
-    (void)at;
   }
 
   void add_face(Segment_walk_result<Tr>& out, const Face& f) const
