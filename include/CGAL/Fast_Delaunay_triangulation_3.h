@@ -45,6 +45,7 @@
 #include <cstdint>
 #include <iostream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -350,6 +351,8 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Segment_cell_iterator<Self> Segment_cell_iterator;
   typedef Iterator_range<Fast_Delaunay_triangulation_3_internal::Handle_iterator<Segment_cell_iterator, Cell_handle>>
       Segment_traverser_cell_handles;
+  typedef Fast_Delaunay_triangulation_3_internal::Segment_walk_iterator<Self, Simplex> Segment_simplex_iterator;
+  typedef Iterator_range<Segment_simplex_iterator> Segment_traverser_simplices;
 
   // ---------------------------------------------------------------- creation
   explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits(),
@@ -690,17 +693,16 @@ public:
   }
 
   // ---------------------------------------------------------------- segment traverser (dimension 3)
-  // The cells crossed by the segment [p, q], from the cell of p to the cell
-  // of q, as CGAL's traverser gives them when p and q are in the convex hull
-  // and the segment meets no edge or vertex (general position).
+  // The cells and the faces met by the segment [p, q] (or [vs, vt]) in
+  // order, p in the convex hull (see Segment_traverser.h).
   Segment_cell_iterator segment_traverser_cells_begin(const Point& p, const Point& q,
                                                       Cell_handle hint = Cell_handle()) const
   {
-    return Segment_cell_iterator(this, p, q, hint);
+    return Segment_cell_iterator(segment_walk(p, q, hint).cells);
   }
   Segment_cell_iterator segment_traverser_cells_begin(Vertex_handle vs, Vertex_handle vt) const
   {
-    return Segment_cell_iterator(this, vs, vt);
+    return Segment_cell_iterator(segment_walk(vs, vt).cells);
   }
   Segment_cell_iterator segment_traverser_cells_end() const { return Segment_cell_iterator(); }
   Segment_traverser_cell_handles segment_traverser_cell_handles(Vertex_handle vs, Vertex_handle vt) const
@@ -711,6 +713,26 @@ public:
                                                                 Cell_handle hint = Cell_handle()) const
   {
     return cell_handles_of(segment_traverser_cells_begin(p, q, hint));
+  }
+  Segment_simplex_iterator segment_traverser_simplices_begin(const Point& p, const Point& q,
+                                                             Cell_handle hint = Cell_handle()) const
+  {
+    return Segment_simplex_iterator(simplices_of(segment_walk(p, q, hint)));
+  }
+  Segment_simplex_iterator segment_traverser_simplices_begin(Vertex_handle vs, Vertex_handle vt) const
+  {
+    return Segment_simplex_iterator(simplices_of(segment_walk(vs, vt)));
+  }
+  Segment_simplex_iterator segment_traverser_simplices_end() const { return Segment_simplex_iterator(); }
+  Segment_traverser_simplices segment_traverser_simplices(const Point& p, const Point& q,
+                                                          Cell_handle hint = Cell_handle()) const
+  {
+    return Segment_traverser_simplices(segment_traverser_simplices_begin(p, q, hint),
+                                       segment_traverser_simplices_end());
+  }
+  Segment_traverser_simplices segment_traverser_simplices(Vertex_handle vs, Vertex_handle vt) const
+  {
+    return Segment_traverser_simplices(segment_traverser_simplices_begin(vs, vt), segment_traverser_simplices_end());
   }
 
   // ---------------------------------------------------------------- access
@@ -1535,6 +1557,44 @@ private:
     query(std::back_inserter(found));
     for(const Reference& x : found) *out++ = from_reference(x);
     return out;
+  }
+
+  typedef Fast_Delaunay_triangulation_3_internal::Segment_walk<Self> Segment_walk;
+  typedef Fast_Delaunay_triangulation_3_internal::Segment_walk_result<Self> Segment_walk_result;
+
+  Segment_walk_result segment_walk(const Point& p, const Point& q, Cell_handle hint) const
+  {
+    CGAL_precondition(dimension() == 3 && p != q);
+    Locate_type lt;
+    int li, lj;
+    const Cell_handle c = locate(p, lt, li, lj, hint);
+    if(lt == OUTSIDE_CONVEX_HULL)
+      throw std::invalid_argument("segment traverser: the segment's source lies outside the convex hull");
+    unsigned mask = 15u;
+    if(lt == VERTEX) mask = 1u << li;
+    else if(lt == EDGE) mask = (1u << li) | (1u << lj);
+    else if(lt == FACET) mask = 15u & ~(1u << li);
+    return Segment_walk(this, p, q).run({c, mask});
+  }
+  Segment_walk_result segment_walk(Vertex_handle vs, Vertex_handle vt) const
+  {
+    CGAL_precondition(dimension() == 3 && vs != vt && !is_infinite(vs) && !is_infinite(vt));
+    const Cell_handle c = vs->cell();
+    return Segment_walk(this, vs->point(), vt->point()).run({c, 1u << c->index(vs)});
+  }
+  std::vector<Simplex> simplices_of(const Segment_walk_result& walk) const
+  {
+    std::vector<Simplex> simplices;
+    for(const auto& f : walk.faces) {
+      int index[4], n = 0;
+      for(int k = 0; k < 4; ++k)
+        if(f.mask & (1u << k)) index[n++] = k;
+      if(n == 1) simplices.push_back(Simplex(f.cell->vertex(index[0])));
+      else if(n == 2) simplices.push_back(Simplex(Edge(f.cell, index[0], index[1])));
+      else if(n == 3) simplices.push_back(Simplex(Facet(f.cell, 6 - index[0] - index[1] - index[2])));
+      else simplices.push_back(Simplex(f.cell));
+    }
+    return simplices;
   }
 
   Segment_traverser_cell_handles cell_handles_of(Segment_cell_iterator begin) const

@@ -60,10 +60,12 @@ Default: `Default`.
   by dimension then by handles (CGAL's by addresses) and `operator<<` prints
   vertex indices. The segment traverser is provided for two points
   (`segment_traverser_cells_begin(p, q, hint)`, `segment_traverser_cells_end()`,
-  `segment_traverser_cell_handles(p, q, hint)`) and for two vertices, in
-  dimension 3, with both points in the convex hull; it gives CGAL's cells when
-  the segment meets no vertex or edge (but its ends). The simplex traverser
-  (`segment_traverser_simplices`) is not provided.
+  `segment_traverser_cell_handles(p, q, hint)`, `segment_traverser_simplices_begin(p, q, hint)`,
+  `segment_traverser_simplices_end()`, `segment_traverser_simplices(p, q, hint)`) and for two
+  vertices, in dimension 3, with `p` in the convex hull (`std::invalid_argument` otherwise); it
+  gives CGAL's cells and simplices when the segment meets no vertex or edge (but its ends), and
+  otherwise the faces the segment meets (CGAL 5.5's sequence there depends on its storage; the
+  user manual says how it differs).
 - Point location, the conflict zone, the incident / adjacent queries and
   the circulators, the Voronoi duals and `is_Gabriel()` are provided in
   dimension 3 (the manual lists them); stream operators read and write

@@ -1,138 +1,326 @@
 // Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The cells crossed by a segment [p, q] in dimension 3, in order from the
-// cell of p to the cell of q (CGAL's segment_traverser_cells_begin/end), as
-// a forward iterator that takes one step of the straight walk per increment.
+// The faces and cells met by a segment [p, q] in dimension 3, in order from p
+// to q (CGAL's segment_traverser_simplices and segment_traverser_cells).
 //
-// A step leaves the current cell through the facet that the line pq pierces
-// and that q lies strictly beyond.  Facet i of a positively oriented cell has
-// q beyond it when replacing vertex i by q makes the cell negative; the line
-// pierces the triangle (a, b, c) when orient(p, q, a, b), orient(p, q, b, c)
-// and orient(p, q, c, a) share one sign.  With p strictly inside the first
-// cell and pq crossing no edge or vertex (general position) exactly one facet
-// qualifies, so the cells are CGAL's.  Both points must lie in the convex
-// hull: the walk never enters an infinite cell.  From vertex to vertex the
-// walk starts in the cell of the first vertex that the segment enters and
-// stops in the cell that has the second vertex.
+// One walk serves both.  Along the line x(t) = (1 - t) p + t q, the
+// barycentric coordinate of x(t) for vertex k of a finite cell is affine in t:
+// lambda_k(t) = (1 - t) lambda_k(p) + t lambda_k(q), lambda_k(x) being the
+// orientation determinant of the cell with vertex k replaced by x.  These are
+// computed in exact rational arithmetic from the input doubles, so every
+// decision (where the segment leaves a cell, whether it runs along an edge or
+// inside a facet, whether it passes through a vertex) is a comparison of exact
+// numbers and no degenerate case needs its own code:
+//   - in a cell, the segment occupies [t_in, t_out], t_out the first zero of a
+//     decreasing lambda (or 1); the face of x(t) is the set of vertices with
+//     lambda_k(t) > 0, read at t_in, in between, and at t_out;
+//   - at t_out the walk moves to a finite cell incident to the face of
+//     x(t_out) that holds x(t_out + epsilon) in its closure (each lambda either
+//     positive there or zero and not decreasing).
+// The faces so listed are the open faces that the segment meets, each once, in
+// order: this is canonical, whatever cell stores a face.  Where the segment
+// runs in a face of dimension below 3 several cells hold it; the walk takes the
+// first one found around the face, so the cell sequence there is one valid
+// choice (CGAL 5.5's choice depends on its own storage: a Delaunay_triangulation_3
+// built from the same points in another order may list other cells).
+//
+// The segment must start in the convex hull (closed); it may leave it: the
+// walk then ends with the infinite cell behind the hull facet through which it
+// leaves, as CGAL's does.
 
 #ifndef CGAL_FDT3_INTERNAL_SEGMENT_TRAVERSER_H
 #define CGAL_FDT3_INTERNAL_SEGMENT_TRAVERSER_H
 
+#include <CGAL/Exact_rational.h>
 #include <CGAL/assertions.h>
-#include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
 
+#include <array>
 #include <cstddef>
 #include <iterator>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 
+// A face of a cell as the set of its vertex indices (bit k: vertex k).
 template <class Tr>
-class Segment_cell_iterator
+struct Segment_face
+{
+  typename Tr::Cell_handle cell;
+  unsigned mask;
+};
+
+template <class Tr>
+struct Segment_walk_result
+{
+  std::vector<typename Tr::Cell_handle> cells;
+  std::vector<Segment_face<Tr>> faces;
+};
+
+template <class Tr>
+class Segment_walk
 {
 public:
   typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Point Point;
-  typedef std::forward_iterator_tag iterator_category;
-  typedef typename Tr::Cell value_type;
-  typedef const value_type* pointer;
-  typedef const value_type& reference;
-  typedef std::ptrdiff_t difference_type;
+  typedef CGAL::Exact_rational Exact;
+  typedef Segment_face<Tr> Face;
 
-  // The end.
-  Segment_cell_iterator() = default;
-  Segment_cell_iterator(const Tr* tr, const Point& p, const Point& q, Cell_handle hint)
-      : tr_(tr), p_(p), q_(q)
+  Segment_walk(const Tr* tr, const Point& p, const Point& q) : tr_(tr), p_(exact(p)), q_(exact(q)) {}
+
+  // From the face `start` (holding p) to q.
+  Segment_walk_result<Tr> run(Face start)
   {
-    CGAL_precondition(tr->dimension() == 3);
-    cell_ = tr->locate(p, hint);
-    CGAL_precondition(!tr->is_infinite(cell_));
+    Segment_walk_result<Tr> out;
+    Exact t = 0;
+    Face at = start;
+    for(;;) {
+      Lambdas cell = continuation_cell(at, t, out.cells.empty() ? Cell_handle() : out.cells.back());
+      if(cell.c == Cell_handle()) {
+        leave_hull(t, out);
+        return out;
+      }
+      const Exact t_out = exit_parameter(cell);
+      CGAL_assertion(t < t_out);
+      add_face(out, Face{cell.c, positive_mask(cell, t)});
+      add_face(out, Face{cell.c, positive_mask(cell, (t + t_out) / 2)});
+      add_face(out, Face{cell.c, positive_mask(cell, t_out)});
+      out.cells.push_back(cell.c);
+      if(t_out == 1) return out;
+      t = t_out;
+      at = Face{cell.c, positive_mask(cell, t_out)};
+    }
   }
 
-  // From vertex vs to vertex vt: the first cell is the cell of vs that the
-  // segment enters, the one whose cone at vs holds vt (vt inside each of its
-  // three facets through vs).
-  Segment_cell_iterator(const Tr* tr, typename Tr::Vertex_handle vs, typename Tr::Vertex_handle vt)
-      : tr_(tr), p_(vs->point()), q_(vt->point())
+private:
+  typedef std::array<Exact, 3> Exact_point;
+
+  struct Lambdas
   {
-    CGAL_precondition(tr->dimension() == 3 && vs != vt && !tr->is_infinite(vs) && !tr->is_infinite(vt));
+    Cell_handle c;
+    std::array<Exact, 4> at_p, at_q;
+    Exact at(int k, const Exact& t) const { return at_p[k] + t * (at_q[k] - at_p[k]); }
+  };
+
+  static Exact_point exact(const Point& p)
+  {
+    return {Exact(CGAL::to_double(p.x())), Exact(CGAL::to_double(p.y())), Exact(CGAL::to_double(p.z()))};
+  }
+
+  static Exact determinant(const std::array<Exact_point, 4>& v)
+  {
+    Exact m[3][3];
+    for(int r = 0; r < 3; ++r)
+      for(int k = 0; k < 3; ++k) m[r][k] = v[r + 1][k] - v[0][k];
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  }
+
+  Lambdas lambdas(Cell_handle c) const
+  {
+    Lambdas l;
+    l.c = c;
+    std::array<Exact_point, 4> v;
+    for(int k = 0; k < 4; ++k) v[k] = exact(c->vertex(k)->point());
+    for(int k = 0; k < 4; ++k) {
+      const Exact_point keep = v[k];
+      v[k] = p_;
+      l.at_p[k] = determinant(v);
+      v[k] = q_;
+      l.at_q[k] = determinant(v);
+      v[k] = keep;
+    }
+    return l;
+  }
+
+  static unsigned positive_mask(const Lambdas& l, const Exact& t)
+  {
+    unsigned mask = 0;
+    for(int k = 0; k < 4; ++k)
+      if(CGAL::is_positive(l.at(k, t))) mask |= 1u << k;
+    return mask;
+  }
+
+  // The segment stays in the closed cell until the first decreasing
+  // barycentric coordinate vanishes.
+  static Exact exit_parameter(const Lambdas& l)
+  {
+    Exact t_out = 1;
+    for(int k = 0; k < 4; ++k)
+      if(l.at_q[k] < l.at_p[k]) {
+        const Exact t_k = l.at_p[k] / (l.at_p[k] - l.at_q[k]);
+        if(t_k < t_out) t_out = t_k;
+      }
+    return t_out;
+  }
+
+  // Holds x(t) and x(t + epsilon): no coordinate negative at t, and none
+  // vanishing there while decreasing.
+  static bool holds_continuation(const Lambdas& l, const Exact& t)
+  {
+    for(int k = 0; k < 4; ++k) {
+      const Exact value = l.at(k, t);
+      if(CGAL::is_negative(value)) return false;
+      if(CGAL::is_zero(value) && l.at_q[k] < l.at_p[k]) return false;
+    }
+    return true;
+  }
+
+  std::vector<Cell_handle> cells_around(const Face& f) const
+  {
     std::vector<Cell_handle> around;
-    tr->finite_incident_cells(vs, std::back_inserter(around));
-    for(Cell_handle c : around) {
-      cell_ = c;
-      const int k = c->index(vs);
-      bool inside_cone = true;
-      for(int i = 0; i < 4 && inside_cone; ++i)
-        if(i != k) inside_cone = orientation_with_q_at(i) == POSITIVE;
-      if(inside_cone) return;
+    int index[4], n = 0;
+    for(int k = 0; k < 4; ++k)
+      if(f.mask & (1u << k)) index[n++] = k;
+    switch(n) {
+      case 4: around.push_back(f.cell); break;
+      case 3: {
+        around.push_back(f.cell);
+        for(int k = 0; k < 4; ++k)
+          if(!(f.mask & (1u << k))) around.push_back(f.cell->neighbor(k));
+        break;
+      }
+      case 2: {
+        typename Tr::Cell_circulator c = tr_->incident_cells(f.cell, index[0], index[1]), done = c;
+        do around.push_back(c); while(++c != done);
+        break;
+      }
+      default: tr_->incident_cells(f.cell->vertex(index[0]), std::back_inserter(around)); break;
+    }
+    return around;
+  }
+
+  // A null cell when the segment leaves the hull at x(t).
+  // The cell just left is skipped: the walk only moves forward.
+  Lambdas continuation_cell(const Face& at, const Exact& t, Cell_handle left) const
+  {
+    for(Cell_handle c : cells_around(at)) {
+      if(c == left || tr_->is_infinite(c)) continue;
+      Lambdas l = lambdas(c);
+      if(holds_continuation(l, t)) return l;
+    }
+    return Lambdas();
+  }
+
+  // Behind the hull facet through which the segment leaves: one facet of the
+  // last cell that holds the exit face and has q strictly beyond.
+  void leave_hull(const Exact& t, Segment_walk_result<Tr>& out) const
+  {
+    CGAL_assertion(!out.cells.empty());
+    const Lambdas last = lambdas(out.cells.back());
+    for(int k = 0; k < 4; ++k) {
+      const Cell_handle behind = last.c->neighbor(k);
+      if(!tr_->is_infinite(behind) || (positive_mask(last, t) & (1u << k)) || !CGAL::is_negative(last.at_q[k]))
+        continue;
+      out.cells.push_back(behind);
+      out.faces.push_back(Face{behind, 15u});
+      return;
     }
     CGAL_assertion(false);
   }
 
-  reference operator*() const { return *cell_; }
-  pointer operator->() const { return cell_.operator->(); }
-  operator Cell_handle() const { return cell_; }
-  Cell_handle handle() const { return cell_; }
+  void add_face(Segment_walk_result<Tr>& out, const Face& f) const
+  {
+    if(!out.faces.empty() && same_face(out.faces.back(), f)) return;
+    out.faces.push_back(f);
+  }
+
+  static bool same_face(const Face& a, const Face& b)
+  {
+    if(a.cell == b.cell) return a.mask == b.mask;
+    int na = 0, nb = 0;
+    for(int k = 0; k < 4; ++k) {
+      if(a.mask & (1u << k)) {
+        ++na;
+        if(!b.cell->has_vertex(a.cell->vertex(k))) return false;
+      }
+      if(b.mask & (1u << k)) ++nb;
+    }
+    return na == nb;
+  }
+
+  const Tr* tr_;
+  Exact_point p_, q_;
+};
+
+// Forward iterator over a walk computed once and shared by the copies.
+template <class Tr, class Value>
+class Segment_walk_iterator
+{
+public:
+  typedef std::forward_iterator_tag iterator_category;
+  typedef Value value_type;
+  typedef const Value* pointer;
+  typedef const Value& reference;
+  typedef std::ptrdiff_t difference_type;
+
+  // The end.
+  Segment_walk_iterator() = default;
+  explicit Segment_walk_iterator(std::vector<Value> values)
+      : values_(values.empty() ? nullptr : std::make_shared<const std::vector<Value>>(std::move(values)))
+  {}
+
+  reference operator*() const { return (*values_)[i_]; }
+  pointer operator->() const { return &(*values_)[i_]; }
+
+  Segment_walk_iterator& operator++()
+  {
+    if(++i_ == values_->size()) *this = Segment_walk_iterator();
+    return *this;
+  }
+  Segment_walk_iterator operator++(int)
+  {
+    Segment_walk_iterator old = *this;
+    ++*this;
+    return old;
+  }
+  friend bool operator==(const Segment_walk_iterator& a, const Segment_walk_iterator& b)
+  {
+    return a.values_ == b.values_ && a.i_ == b.i_;
+  }
+  friend bool operator!=(const Segment_walk_iterator& a, const Segment_walk_iterator& b) { return !(a == b); }
+
+private:
+  std::shared_ptr<const std::vector<Value>> values_;
+  std::size_t i_ = 0;
+};
+
+// The cells, dereferencing to the cell and converting to its handle, as
+// CGAL's Triangulation_segment_cell_iterator_3.
+template <class Tr>
+class Segment_cell_iterator : public Segment_walk_iterator<Tr, typename Tr::Cell_handle>
+{
+  typedef Segment_walk_iterator<Tr, typename Tr::Cell_handle> Base;
+
+public:
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Cell value_type;
+  typedef const value_type* pointer;
+  typedef const value_type& reference;
+
+  Segment_cell_iterator() = default;
+  explicit Segment_cell_iterator(std::vector<Cell_handle> cells) : Base(std::move(cells)) {}
+
+  reference operator*() const { return *handle(); }
+  pointer operator->() const { return handle().operator->(); }
+  operator Cell_handle() const { return handle(); }
+  Cell_handle handle() const { return Base::operator*(); }
 
   Segment_cell_iterator& operator++()
   {
-    step();
+    Base::operator++();
     return *this;
   }
   Segment_cell_iterator operator++(int)
   {
     Segment_cell_iterator old = *this;
-    step();
+    Base::operator++();
     return old;
   }
-  friend bool operator==(const Segment_cell_iterator& a, const Segment_cell_iterator& b)
-  {
-    return a.cell_ == b.cell_;
-  }
-  friend bool operator!=(const Segment_cell_iterator& a, const Segment_cell_iterator& b) { return !(a == b); }
-
-private:
-  Point vertex_point(int i) const { return cell_->vertex(i)->point(); }
-
-  Orientation orientation_with_q_at(int i) const
-  {
-    Point v[4] = {vertex_point(0), vertex_point(1), vertex_point(2), vertex_point(3)};
-    v[i] = q_;
-    return tr_->geom_traits().orientation_3_object()(v[0], v[1], v[2], v[3]);
-  }
-
-  bool line_pierces_facet(int i) const
-  {
-    const auto orientation = tr_->geom_traits().orientation_3_object();
-    const Point a = vertex_point((i + 1) & 3), b = vertex_point((i + 2) & 3), c = vertex_point((i + 3) & 3);
-    const Orientation s0 = orientation(p_, q_, a, b);
-    const Orientation s1 = orientation(p_, q_, b, c);
-    const Orientation s2 = orientation(p_, q_, c, a);
-    return s0 == s1 && s1 == s2 && s0 != COPLANAR;
-  }
-
-  // After the cell of q, the end (a null cell).
-  void step()
-  {
-    int exit = -1;
-    for(int i = 0; i < 4 && exit < 0; ++i)
-      if(i != entry_ && orientation_with_q_at(i) == NEGATIVE && line_pierces_facet(i)) exit = i;
-    if(exit < 0) {
-      cell_ = Cell_handle();
-      return;
-    }
-    const Cell_handle next = cell_->neighbor(exit);
-    entry_ = tr_->mirror_index(cell_, exit);
-    cell_ = next;
-    CGAL_assertion(!tr_->is_infinite(cell_));
-  }
-
-  const Tr* tr_ = nullptr;
-  Point p_, q_;
-  Cell_handle cell_;
-  int entry_ = -1;
 };
 
 } // namespace Fast_Delaunay_triangulation_3_internal
