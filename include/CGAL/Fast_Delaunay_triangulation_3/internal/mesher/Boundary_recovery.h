@@ -482,6 +482,11 @@ inline std::vector<std::size_t> carve_region(const Local_problem& problem, const
 
   std::vector<char> wall(4 * n, 0), inside(n, 0);
   std::vector<std::size_t> kept;
+  // No wall: the component is the whole mesh (a cube's six tetrahedra).
+  if(problem.walls.empty() && n > 0) {
+    inside[0] = 1;
+    kept.push_back(0);
+  }
   for(const Region_wall& w : problem.walls) {
     auto it = std::lower_bound(facets.begin(), facets.end(), w.key,
                                [](const Keyed_facet& x, const Triangle_key& k) { return x.key < k; });
@@ -539,8 +544,8 @@ inline std::vector<std::size_t> carve_region(const Local_problem& problem, const
 // when the ring is open on the convex hull).  A flip keeps the component's
 // walls; hull facets it replaces stay in their plane; every new tetrahedron
 // is checked positive exactly.  Greedy: each flip must add a wanted facet,
-// at most four flips (a flat quadrilateral with the wrong diagonal takes one,
-// two neighbouring ones two).
+// at most eight flips (a flat quadrilateral with the wrong diagonal takes
+// one, two neighbouring ones two, a cube's six faces six).
 struct Small_component
 {
   std::vector<std::array<Vertex_id, 4>> tets;
@@ -584,7 +589,7 @@ public:
   // The component re-tetrahedralised with every wanted facet, or empty.
   std::vector<std::array<Vertex_id, 4>> run()
   {
-    const int max_flips = 4;
+    const int max_flips = 8;
     std::size_t present = count_facets(tets_, wanted_);
     for(int flip = 0; flip < max_flips && present < wanted_.size(); ++flip) {
       hull_ = hull_facets();
@@ -771,7 +776,7 @@ private:
 };
 
 // Component c by flips when it has at most `max_tets` tetrahedra (larger
-// ones were not recovered by four flips on CGAL's mechanical parts);
+// ones were not recovered by flips on CGAL's mechanical parts);
 // appends its new tetrahedra to `tets` and returns true, or returns false.
 // The flips must also keep the input triangles the component already had.
 inline bool recover_by_flips(const Flat_storage& m, const Recovery_region& region, std::size_t c,
