@@ -19,9 +19,10 @@
 // surfaces of CGAL's data the region is a fifth to a third of the empty
 // mesh, and TetGen's own Delaunay of all the surface points is not redone.
 //
-// Should TetGen refuse the region, or return a mesh whose boundary is not
-// the region's exactly, the whole surface goes to TetGen as before (switch
-// c keeps the convex hull, which the colouring needs to tell the outside).
+// Should TetGen refuse a component twice (hull facets left out, then as
+// constraints), or return a mesh that does not fit its walls, the whole
+// surface goes to TetGen as before (switch c keeps the convex hull, which
+// the colouring needs to tell the outside).
 // Both paths may add Steiner points strictly inside the region, never on an
 // input triangle; they come after the surface points, whose ids stay.
 //
@@ -397,10 +398,12 @@ struct Local_problem
 };
 
 // Component c of the region; `local` maps mesh vertices to local ids, all
-// unset (Vertex_id(-1)) before and after.
+// unset (Vertex_id(-1)) before and after.  `with_hull_facets`: the
+// component's hull facets are constraints too (TetGen without switch c).
 inline Local_problem local_problem(const Flat_storage& m, const Recovery_region& region, std::size_t c,
                                    const std::vector<Triangle_key>& input,
-                                   const std::vector<Triangle_key>& missing_here, std::vector<Vertex_id>& local)
+                                   const std::vector<Triangle_key>& missing_here, std::vector<Vertex_id>& local,
+                                   bool with_hull_facets = false)
 {
   Local_problem p;
   const Vertex_id unset = Vertex_id(-1);
@@ -426,7 +429,7 @@ inline Local_problem local_problem(const Flat_storage& m, const Recovery_region&
       const Tet_id u = m.neighbor(t, f);
       const Triangle_key k = facet_key(m, t, f);
       if(m.is_ghost(u)) {
-        if(contains(input, k)) facets.push_back(local_key(k));
+        if(with_hull_facets || contains(input, k)) facets.push_back(local_key(k));
       } else if(!region.in_region[u]) {
         const Vertex_id* tv = m.vertex_ids(t);
         p.walls.push_back({local_key(k), local[tv[facet_vertex[f][0]]], local[tv[facet_vertex[f][1]]],
@@ -837,14 +840,23 @@ inline bool recover_locally(const std::vector<Triangle_key>& input, const std::v
       continue;
     }
     ++report.tetgen_components;
-    const Local_problem problem = local_problem(m, region, c, input, missing_in[c], local);
+    Local_problem problem;
     Tetgen_mesh mesh;
-    try {
-      mesh = tetgen_recovery(problem.points, problem.triangles, "pYcMO0zQ");
-    } catch(const std::runtime_error&) {
-      return false;
+    std::vector<std::size_t> kept;
+    // Hull facets left out first (the convex hull of the component's points
+    // meshed, then carved); then, should TetGen split a wall that way, as
+    // constraints too, TetGen removing what lies outside them: on
+    // couplingdown's one failing component this second try holds.
+    for(bool with_hull_facets : {false, true}) {
+      problem = local_problem(m, region, c, input, missing_in[c], local, with_hull_facets);
+      try {
+        mesh = tetgen_recovery(problem.points, problem.triangles, with_hull_facets ? "pYMO0zQ" : "pYcMO0zQ");
+      } catch(const std::runtime_error&) {
+        continue;
+      }
+      kept = carve_region(problem, mesh);
+      if(!kept.empty()) break;
     }
-    const std::vector<std::size_t> kept = carve_region(problem, mesh);
     if(kept.empty()) return false;
     // Steiner points outside the component went with the tetrahedra dropped.
     std::vector<Vertex_id> global(mesh.points.size(), Vertex_id(-1));
