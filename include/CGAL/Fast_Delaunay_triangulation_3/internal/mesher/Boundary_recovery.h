@@ -10,14 +10,14 @@
 // often do) it is kept as it is.  Otherwise the recovery is local: the
 // region of the empty mesh that the missing triangles cross (every
 // tetrahedron whose closure may meet a missing triangle anywhere but at its
-// corners) is cut out and handed to TetGen (Debian's libtet1.5-dev; the
-// paper used Gmsh's copy of TetGen's recovery) as a piecewise linear
-// complex: the region's boundary facets, the missing triangles and the input
-// triangles already inside the region.  TetGen meshes that region alone with
-// no Steiner point on any of those facets, and its tetrahedra replace the
-// region's; the rest of the empty mesh is kept as it is.  On the mechanical
-// surfaces of CGAL's data the region is a fifth to a third of the empty
-// mesh, and TetGen's own Delaunay of all the surface points is not redone.
+// corners; 7% to 13% of the empty mesh on CGAL's mechanical parts) falls
+// apart into small components, each re-tetrahedralised alone while the rest
+// of the empty mesh is kept: by flips of our own where a few suffice, else
+// by TetGen (Debian's libtet1.5-dev; the paper used Gmsh's copy of TetGen's
+// recovery) given the component as a piecewise linear complex (its walls,
+// the missing triangles, the input triangles it holds), with no Steiner
+// point on any of those facets.  TetGen's own Delaunay of all the surface
+// points is not redone.
 //
 // Should TetGen refuse a component twice (hull facets left out, then as
 // constraints), or return a mesh that does not fit its walls, the whole
@@ -252,8 +252,8 @@ inline std::vector<Tet_id> incident_tetrahedra(const Flat_storage& m)
 // tetrahedra a triangle meets are connected across facets, since it never
 // passes through a mesh vertex other than its corners.
 //
-// The region falls apart into many small components (on fandisk 492, half
-// of them two tetrahedra), each recovered on its own: TetGen meshes the
+// The region falls apart into many small components (on fandisk 266, most
+// of two to five tetrahedra), each recovered on its own: TetGen meshes the
 // convex hull of what it is given, and the hull of the whole region is the
 // hull of the part.  A component holds whole triangles: the conservative
 // test lets in star tetrahedra that do not meet the triangle, unconnected
@@ -379,15 +379,14 @@ struct Region_wall
   friend bool operator<(const Region_wall& x, const Region_wall& y) { return x.key < y.key; }
 };
 
-// The region as TetGen's input: its vertices numbered locally, and the
+// A component as TetGen's input: its vertices numbered locally, and the
 // complex of its walls, the missing triangles and the input triangles
-// between two of its tetrahedra or on the convex hull.  The region's other
-// facets on the convex hull are left out: an input triangle in a hull plane
-// may cross them (flat faces of
-// mechanical parts: a fifth to a third of the missing triangles on fandisk,
-// anchor_dense and couplingdown), so TetGen re-triangulates the convex hull
-// of the region's points (switch c), and carve_region keeps what lies
-// inside the walls.
+// between two of its tetrahedra or on the convex hull.  Its other facets on
+// the convex hull are left out: an input triangle in a hull plane may cross
+// them (flat faces of mechanical parts: 14% to 28% of the missing triangles
+// on couplingdown, anchor_dense and fandisk), so TetGen re-triangulates the
+// convex hull of the component's points (switch c), and carve_region keeps
+// what lies inside the walls.
 struct Local_problem
 {
   std::vector<Vertex_id> vertex_of_local;
