@@ -52,7 +52,8 @@ TEST(Mesher, Cube)
 {
   CGAL::Fast_mesher_3::Mesher_statistics stats;
   const Mesh mesh = mesh_and_check_one_volume(mesher_shapes::cube(0, 1), 0.2, stats);
-  // The cube's diagonals are not Delaunay-unique: TetGen recovers them.
+  // The cube's diagonals are not Delaunay-unique: the one component, the whole
+  // mesh, is beyond our flips and goes to TetGen.
   EXPECT_TRUE(stats.used_tetgen);
   // Interior points exist: the 8 corners alone cannot hold tetrahedra of radius <= 1.4 h.
   EXPECT_GT(mesh.points.size(), 50u);
@@ -179,7 +180,8 @@ TEST(Mesher, CgalDataElephant)
 }
 
 // CGAL's couplingdown, a mechanical part: long thin triangles on flat faces
-// and holes, hundreds of them missing from the empty mesh (TetGen's recovery).
+// and holes, hundreds of them missing from the empty mesh (the local recovery,
+// by flips and by TetGen on small components).
 TEST(Mesher, CgalDataMechanicalPart)
 {
   Surface s;

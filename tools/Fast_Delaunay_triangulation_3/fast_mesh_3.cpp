@@ -83,9 +83,14 @@ int main(int argc, char** argv)
                 << "empty mesh              " << stats.empty_mesh_seconds << " s\n"
                 << "boundary recovery       " << stats.recovery_seconds << " s ("
                 << stats.missing_triangles << " input triangles missing from the empty mesh"
-                << (stats.used_tetgen ? ", recovered by TetGen with " + std::to_string(stats.steiner_points) +
-                                            " interior Steiner points"
-                                      : "")
+                << (stats.missing_triangles == 0 ? std::string()
+                    : stats.whole_surface_to_tetgen
+                        ? ", recovered by TetGen on the whole surface"
+                        : ", recovered locally on " + std::to_string(stats.recovery_region_tetrahedra) +
+                              " tetrahedra, " + std::to_string(stats.flipped_components) + " parts by flips and " +
+                              std::to_string(stats.tetgen_components) + " by TetGen")
+                << (stats.used_tetgen ? " with " + std::to_string(stats.steiner_points) + " interior Steiner points"
+                                      : std::string())
                 << ")\n"
                 << "colouring and sizes     " << stats.colouring_seconds << " s\n"
                 << "refinement              " << stats.refinement_seconds << " s (" << stats.refinement_passes

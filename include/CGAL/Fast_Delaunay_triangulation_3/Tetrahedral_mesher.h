@@ -7,8 +7,9 @@
 //
 //   EMPTYMESH        Delaunay of the surface vertices (this package's engine)
 //   RECOVERBOUNDARY  kept as is when no input triangle is missing, else TetGen
-//                    (needs -ltet and TETLIBRARY; CMake target
-//                    Fast_Delaunay_triangulation_3::TetGen in this repository)
+//                    on the region the missing triangles cross (the whole
+//                    surface if that fails; needs -ltet and TETLIBRARY; CMake
+//                    target Fast_Delaunay_triangulation_3::TetGen here)
 //   colouring        one subdomain per volume, the outside dropped
 //   refinement       circumcentres of tetrahedra with radius > 1.4 h, filtered
 //                    at 0.7 h, inserted by batches with constrained,
@@ -82,6 +83,10 @@ struct Mesher_statistics
          refinement_seconds = 0, total_seconds = 0;
   std::size_t missing_triangles = 0; // input triangles absent from the empty mesh
   bool used_tetgen = false;
+  std::size_t recovery_region_tetrahedra = 0; // empty-mesh tetrahedra re-meshed by the local recovery
+  std::size_t flipped_components = 0;          // parts of that region recovered by our flips
+  std::size_t tetgen_components = 0;           // and by TetGen
+  bool whole_surface_to_tetgen = false;        // the local recovery failed, TetGen took everything
   std::size_t steiner_points = 0;    // added by the recovery, inside the volumes
   int refinement_passes = 0;
   // Parts of refinement_seconds: SAMPLEPOINTS, FILTERPOINTS (sequential) and
@@ -116,6 +121,10 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& optio
   stats.recovery_seconds = recovery.recovery_seconds;
   stats.missing_triangles = recovery.missing_triangles;
   stats.used_tetgen = recovery.used_tetgen;
+  stats.recovery_region_tetrahedra = recovery.region_tetrahedra;
+  stats.flipped_components = recovery.flipped_components;
+  stats.tetgen_components = recovery.tetgen_components;
+  stats.whole_surface_to_tetgen = recovery.whole_surface_to_tetgen;
   stats.steiner_points = recovery.steiner_points;
 
   Clock::time_point t1 = Clock::now();

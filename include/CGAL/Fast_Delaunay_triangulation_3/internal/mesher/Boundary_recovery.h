@@ -7,13 +7,31 @@
 // is a facet, the surface neither moved nor split.
 //
 // When the empty mesh already has every input triangle (fine surface meshes
-// often do) it is kept as it is.  Otherwise the recovery is TetGen's
-// (Debian's libtet1.5-dev), as in the paper, which went through Gmsh's copy
-// of TetGen's: switches p (a piecewise linear complex), Y (no Steiner point
-// on the boundary), c (keep the convex hull, which the colouring needs to
-// tell the outside), z (numbering from 0), Q (quiet).  TetGen rebuilds its
-// own Delaunay mesh; it may add Steiner points inside the volumes, after the
-// input points, which keep their numbers.
+// often do) it is kept as it is.  Otherwise the recovery is local: the
+// region of the empty mesh that the missing triangles cross (every
+// tetrahedron whose closure may meet a missing triangle anywhere but at its
+// corners; 7% to 13% of the empty mesh on CGAL's mechanical parts) falls
+// apart into small components, each re-tetrahedralised alone while the rest
+// of the empty mesh is kept: by flips of our own where a few suffice, else
+// by TetGen (Debian's libtet1.5-dev; the paper used Gmsh's copy of TetGen's
+// recovery) given the component as a piecewise linear complex (its walls,
+// the missing triangles, the input triangles it holds), with no Steiner
+// point on any of those facets.  TetGen's own Delaunay of all the surface
+// points is not redone.
+//
+// Should TetGen refuse a component twice (hull facets left out, then as
+// constraints), or return a mesh that does not fit its walls, the whole
+// surface goes to TetGen as before (switch c keeps the convex hull, which
+// the colouring needs to tell the outside).
+// Both paths may add Steiner points strictly inside the region, never on an
+// input triangle; they come after the surface points, whose ids stay.
+//
+// TetGen switches: p (a piecewise linear complex), Y (no Steiner point on
+// the complex's facets), M (coplanar facets are not merged: a merged facet
+// could be re-triangulated, and the region's boundary must come back as it
+// went), O0 (no mesh optimisation: the refinement that follows replaces
+// these tetrahedra anyway; -O's smoothing was 5% of TetGen's time on
+// fandisk), z (numbering from 0), Q (quiet).
 
 #ifndef CGAL_FDT3_INTERNAL_MESHER_BOUNDARY_RECOVERY_H
 #define CGAL_FDT3_INTERNAL_MESHER_BOUNDARY_RECOVERY_H
@@ -25,7 +43,10 @@
 #include <tetgen.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -37,9 +58,13 @@ namespace mesher {
 
 struct Recovery_report
 {
-  std::size_t missing_triangles = 0; // input triangles not facets of the empty mesh
+  std::size_t missing_triangles = 0;  // input triangles not facets of the empty mesh
   bool used_tetgen = false;
-  std::size_t steiner_points = 0;    // added by TetGen inside the volumes
+  std::size_t region_tetrahedra = 0;  // empty-mesh tetrahedra re-meshed by the local recovery
+  std::size_t flipped_components = 0;  // region components recovered by one flip of ours
+  std::size_t tetgen_components = 0;   // region components recovered by TetGen
+  bool whole_surface_to_tetgen = false; // the local recovery failed: TetGen re-meshed everything
+  std::size_t steiner_points = 0;     // added by TetGen inside the volumes
   double empty_mesh_seconds = 0, recovery_seconds = 0;
 };
 
@@ -55,20 +80,27 @@ inline std::vector<Triangle_key> input_triangle_keys(const Surface_soup& soup,
   return keys;
 }
 
-// How many sorted `wanted` keys are not facets of a live tetrahedron of m.
-inline std::size_t count_missing_facets(const Flat_storage& m, const std::vector<Triangle_key>& wanted)
+inline bool contains(const std::vector<Triangle_key>& sorted, const Triangle_key& k)
 {
-  std::vector<std::size_t> found;
+  return std::binary_search(sorted.begin(), sorted.end(), k);
+}
+
+// The sorted `wanted` keys that are not facets of a live tetrahedron of m.
+inline std::vector<Triangle_key> missing_facets(const Flat_storage& m, const std::vector<Triangle_key>& wanted)
+{
+  std::vector<char> found(wanted.size(), 0);
   for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
     if(!m.is_live(t) || m.is_ghost(t)) continue;
     for(int f = 0; f < 4; ++f) {
       const Triangle_key k = facet_key(m, t, f);
       auto it = std::lower_bound(wanted.begin(), wanted.end(), k);
-      if(it != wanted.end() && *it == k) found.push_back(static_cast<std::size_t>(it - wanted.begin()));
+      if(it != wanted.end() && *it == k) found[it - wanted.begin()] = 1;
     }
   }
-  std::sort(found.begin(), found.end());
-  return wanted.size() - static_cast<std::size_t>(std::unique(found.begin(), found.end()) - found.begin());
+  std::vector<Triangle_key> missing;
+  for(std::size_t i = 0; i < wanted.size(); ++i)
+    if(!found[i]) missing.push_back(wanted[i]);
+  return missing;
 }
 
 // EMPTYMESH with our engine.  On return `out.vertex_of_input` maps surface
@@ -86,19 +118,28 @@ inline void empty_mesh(const Surface_soup& soup, int threads, Constrained_mesh& 
   out.mesh = std::move(core.mesh);
 }
 
-// RECOVERBOUNDARY by TetGen; replaces out.mesh.  Vertex ids of the result
-// are the input point numbers, then the Steiner points.
-inline void recover_with_tetgen(const Surface_soup& soup, Constrained_mesh& out, Recovery_report& report)
+// What TetGen returns: its points (the given ones first, unmoved, then the
+// Steiner points) and its tetrahedra, positively oriented.
+struct Tetgen_mesh
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<Vertex_id, 4>> tets;
+};
+
+// TetGen on the complex of `triangles` (indices into `points`).  Throws
+// std::runtime_error when TetGen fails or moves a given point.
+inline Tetgen_mesh tetgen_recovery(const std::vector<std::array<double, 3>>& points,
+                                   const std::vector<std::array<Vertex_id, 3>>& triangles, const char* switches)
 {
   tetgenio in, result;
   in.firstnumber = 0;
-  in.numberofpoints = static_cast<int>(soup.points.size());
-  in.pointlist = new REAL[3 * soup.points.size()];
-  for(std::size_t i = 0; i < soup.points.size(); ++i)
-    for(int a = 0; a < 3; ++a) in.pointlist[3 * i + a] = soup.points[i][a];
-  in.numberoffacets = static_cast<int>(soup.triangles.size());
-  in.facetlist = new tetgenio::facet[soup.triangles.size()];
-  for(std::size_t t = 0; t < soup.triangles.size(); ++t) {
+  in.numberofpoints = static_cast<int>(points.size());
+  in.pointlist = new REAL[3 * points.size()];
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int a = 0; a < 3; ++a) in.pointlist[3 * i + a] = points[i][a];
+  in.numberoffacets = static_cast<int>(triangles.size());
+  in.facetlist = new tetgenio::facet[triangles.size()];
+  for(std::size_t t = 0; t < triangles.size(); ++t) {
     tetgenio::facet& f = in.facetlist[t];
     tetgenio::init(&f);
     f.numberofpolygons = 1;
@@ -106,38 +147,737 @@ inline void recover_with_tetgen(const Surface_soup& soup, Constrained_mesh& out,
     tetgenio::init(&f.polygonlist[0]);
     f.polygonlist[0].numberofvertices = 3;
     f.polygonlist[0].vertexlist = new int[3];
-    for(int i = 0; i < 3; ++i) f.polygonlist[0].vertexlist[i] = static_cast<int>(soup.triangles[t][i]);
+    for(int i = 0; i < 3; ++i) f.polygonlist[0].vertexlist[i] = static_cast<int>(triangles[t][i]);
   }
-  char switches[] = "pYczQ";
+  std::string s(switches);
   try {
-    tetrahedralize(switches, &in, &result);
+    tetrahedralize(&s[0], &in, &result);
   } catch(int code) {
-    std::ostringstream s;
-    s << "Tetrahedral_mesher: TetGen's boundary recovery failed (TetGen error " << code << ")";
-    throw std::runtime_error(s.str());
+    std::ostringstream message;
+    message << "Tetrahedral_mesher: TetGen's boundary recovery failed (TetGen error " << code << ")";
+    throw std::runtime_error(message.str());
   }
   if(result.numberofpoints < in.numberofpoints || result.numberofcorners != 4)
     throw std::runtime_error("Tetrahedral_mesher: TetGen returned an unexpected mesh");
 
-  std::vector<std::array<double, 3>> points(static_cast<std::size_t>(result.numberofpoints));
-  for(std::size_t i = 0; i < points.size(); ++i) {
-    for(int a = 0; a < 3; ++a) points[i][a] = result.pointlist[3 * i + a];
-    if(i < soup.points.size() && points[i] != soup.points[i])
+  Tetgen_mesh out;
+  out.points.resize(static_cast<std::size_t>(result.numberofpoints));
+  for(std::size_t i = 0; i < out.points.size(); ++i) {
+    for(int a = 0; a < 3; ++a) out.points[i][a] = result.pointlist[3 * i + a];
+    if(i < points.size() && out.points[i] != points[i])
       throw std::runtime_error("Tetrahedral_mesher: TetGen moved an input point");
   }
-  std::vector<std::array<Vertex_id, 4>> tets(static_cast<std::size_t>(result.numberoftetrahedra));
-  for(std::size_t t = 0; t < tets.size(); ++t) {
-    for(int i = 0; i < 4; ++i) tets[t][i] = static_cast<Vertex_id>(result.tetrahedronlist[4 * t + i]);
-    const int o = orientation(points[tets[t][0]].data(), points[tets[t][1]].data(), points[tets[t][2]].data(),
-                              points[tets[t][3]].data());
+  out.tets.resize(static_cast<std::size_t>(result.numberoftetrahedra));
+  for(std::size_t t = 0; t < out.tets.size(); ++t) {
+    std::array<Vertex_id, 4>& tv = out.tets[t];
+    for(int i = 0; i < 4; ++i) tv[i] = static_cast<Vertex_id>(result.tetrahedronlist[4 * t + i]);
+    const int o = orientation(out.points[tv[0]].data(), out.points[tv[1]].data(), out.points[tv[2]].data(),
+                              out.points[tv[3]].data());
     if(o == 0) throw std::runtime_error("Tetrahedral_mesher: TetGen returned a flat tetrahedron");
-    if(o < 0) std::swap(tets[t][0], tets[t][1]);
+    if(o < 0) std::swap(tv[0], tv[1]);
   }
-  out.mesh = flat_storage_from_tetrahedra(points, tets);
+  return out;
+}
+
+// RECOVERBOUNDARY of the whole surface by TetGen; replaces out.mesh.  Vertex
+// ids of the result are the input point numbers, then the Steiner points.
+inline void recover_with_tetgen(const Surface_soup& soup, Constrained_mesh& out, Recovery_report& report)
+{
+  std::vector<std::array<Vertex_id, 3>> triangles(soup.triangles.size());
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(int i = 0; i < 3; ++i) triangles[t][i] = soup.triangles[t][i];
+  const Tetgen_mesh result = tetgen_recovery(soup.points, triangles, "pYcMO0zQ");
+  out.mesh = flat_storage_from_tetrahedra(result.points, result.tets);
   out.vertex_of_input.resize(soup.points.size());
   for(std::size_t i = 0; i < soup.points.size(); ++i) out.vertex_of_input[i] = static_cast<Vertex_id>(i);
   report.used_tetgen = true;
-  report.steiner_points = points.size() - soup.points.size();
+  report.whole_surface_to_tetgen = true;
+  report.steiner_points = result.points.size() - soup.points.size();
+}
+
+// True unless tetrahedron t (finite, positive) provably meets the closed
+// triangle (a, b, c) of mesh vertices at most in vertices they share, that
+// is unless a plane of t's facets or the triangle's plane separates them.
+// Exact, and conservative: the nine edge-pair separating axes are not tried,
+// so a few tetrahedra near the triangle are kept that need not be.
+inline bool may_meet_triangle(const Flat_storage& m, Tet_id t, const Triangle_key& tri)
+{
+  const Vertex_id* tv = m.vertex_ids(t);
+  auto is_triangle_vertex = [&](Vertex_id v) { return v == tri.v[0] || v == tri.v[1] || v == tri.v[2]; };
+  auto is_tet_vertex = [&](Vertex_id v) { return v == tv[0] || v == tv[1] || v == tv[2] || v == tv[3]; };
+  const double* abc[3] = {m.point(tri.v[0]), m.point(tri.v[1]), m.point(tri.v[2])};
+
+  // On the triangle's plane, t may only have vertices of the triangle: t
+  // then meets it in the face of t those vertices span, shared by both.
+  int below = 0, above = 0;
+  bool foreign_on_plane = false;
+  for(int i = 0; i < 4; ++i) {
+    const int o = orientation(abc[0], abc[1], abc[2], m.point(tv[i]));
+    below += o < 0;
+    above += o > 0;
+    if(o == 0 && !is_triangle_vertex(tv[i])) foreign_on_plane = true;
+  }
+  if(!foreign_on_plane && (below == 0 || above == 0)) return false;
+
+  for(int f = 0; f < 4; ++f) {
+    const double* w[3] = {m.point(tv[facet_vertex[f][0]]), m.point(tv[facet_vertex[f][1]]),
+                          m.point(tv[facet_vertex[f][2]])};
+    bool separated = true;
+    for(int i = 0; i < 3 && separated; ++i) {
+      const int o = orientation(abc[i], w[0], w[1], w[2]); // > 0: on t's side of facet f
+      separated = o < 0 || (o == 0 && is_tet_vertex(tri.v[i]));
+    }
+    if(separated) return false;
+  }
+  return true;
+}
+
+// A finite tetrahedron incident to each vertex (no_tet for a vertex of none).
+inline std::vector<Tet_id> incident_tetrahedra(const Flat_storage& m)
+{
+  std::vector<Tet_id> incident(m.vertices.size(), no_tet);
+  for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+    if(!m.is_live(t) || m.is_ghost(t)) continue;
+    for(int i = 0; i < 4; ++i) incident[m.vertex(t, i)] = t;
+  }
+  return incident;
+}
+
+// The region of the local recovery: in_region[t] for the finite
+// tetrahedra that may meet a missing triangle elsewhere than at its corners.
+// Outside it, every tetrahedron meets every input triangle in a face they
+// share at most, so the region's boundary and the input triangles form a
+// valid complex.  Per triangle, a search across facets from the finite star
+// of its first corner (where the triangle leaves that corner): the
+// tetrahedra a triangle meets are connected across facets, since it never
+// passes through a mesh vertex other than its corners.
+//
+// The region falls apart into many small components (on fandisk 266, most
+// of two to five tetrahedra), each recovered on its own: TetGen meshes the
+// convex hull of what it is given, and the hull of the whole region is the
+// hull of the part.  A component holds whole triangles: the conservative
+// test lets in star tetrahedra that do not meet the triangle, unconnected
+// to those that do, so a triangle's tetrahedra are joined explicitly.  A
+// component made only of such tetrahedra has no missing triangle, and is
+// left as it is.
+struct Recovery_region
+{
+  std::vector<char> in_region;                   // per slot
+  std::vector<Tet_id> tets;                      // grouped by component
+  std::vector<std::size_t> component_begin;      // component c: [begin[c], begin[c + 1]) of tets
+  std::vector<std::size_t> component_of_missing; // per missing triangle
+  std::size_t number_of_components() const { return component_begin.size() - 1; }
+};
+
+// Union-find over tetrahedron slots, for the components.
+class Tet_partition
+{
+public:
+  explicit Tet_partition(std::size_t slots) : parent_(slots)
+  {
+    for(std::size_t t = 0; t < slots; ++t) parent_[t] = static_cast<Tet_id>(t);
+  }
+  Tet_id find(Tet_id t)
+  {
+    while(parent_[t] != t) {
+      parent_[t] = parent_[parent_[t]];
+      t = parent_[t];
+    }
+    return t;
+  }
+  void join(Tet_id s, Tet_id t) { parent_[find(s)] = find(t); }
+
+private:
+  std::vector<Tet_id> parent_;
+};
+
+inline Recovery_region recovery_region(const Flat_storage& m, const std::vector<Triangle_key>& missing)
+{
+  Recovery_region region;
+  region.in_region.assign(m.number_of_slots(), 0);
+  const std::vector<Tet_id> incident = incident_tetrahedra(m);
+  Tet_partition partition(m.number_of_slots());
+  std::vector<std::uint32_t> seen(m.number_of_slots(), 0);
+  std::uint32_t stamp = 0;
+  std::vector<Tet_id> star, front, unsorted, met_by(missing.size());
+  for(std::size_t i = 0; i < missing.size(); ++i) {
+    const Triangle_key& tri = missing[i];
+    ++stamp;
+    const Vertex_id a = tri.v[0];
+    CGAL_assertion(incident[a] != no_tet);
+    star.assign(1, incident[a]);
+    seen[incident[a]] = stamp;
+    front.clear();
+    for(std::size_t k = 0; k < star.size(); ++k) {
+      const Tet_id t = star[k];
+      if(may_meet_triangle(m, t, tri)) front.push_back(t);
+      for(int f = 0; f < 4; ++f) {
+        const Tet_id u = m.neighbor(t, f);
+        if(m.vertex(t, f) == a || m.is_ghost(u) || seen[u] == stamp) continue;
+        seen[u] = stamp;
+        star.push_back(u);
+      }
+    }
+    // A missing triangle leaves its corner through some tetrahedron.
+    CGAL_assertion(!front.empty());
+    met_by[i] = front.front();
+    // A new stamp for the search: star tetrahedra rejected above are tested
+    // again when the search reaches them, which is rare and cheap.
+    ++stamp;
+    for(Tet_id t : front) seen[t] = stamp;
+    for(std::size_t k = 0; k < front.size(); ++k) {
+      const Tet_id t = front[k];
+      partition.join(t, met_by[i]);
+      if(!region.in_region[t]) {
+        region.in_region[t] = 1;
+        unsorted.push_back(t);
+      }
+      for(int f = 0; f < 4; ++f) {
+        const Tet_id u = m.neighbor(t, f);
+        if(m.is_ghost(u) || seen[u] == stamp) continue;
+        seen[u] = stamp;
+        if(may_meet_triangle(m, u, tri)) front.push_back(u);
+      }
+    }
+  }
+  for(Tet_id t : unsorted)
+    for(int f = 0; f < 4; ++f) {
+      const Tet_id u = m.neighbor(t, f);
+      if(region.in_region[u]) partition.join(t, u);
+    }
+
+  // Components without a missing triangle leave the region.
+  std::vector<char> needed(m.number_of_slots(), 0);
+  for(Tet_id t : met_by) needed[partition.find(t)] = 1;
+  std::vector<Tet_id> by_root;
+  for(Tet_id t : unsorted) {
+    if(needed[partition.find(t)]) by_root.push_back(t);
+    else region.in_region[t] = 0;
+  }
+  std::sort(by_root.begin(), by_root.end(),
+            [&](Tet_id s, Tet_id t) { return partition.find(s) < partition.find(t); });
+  const std::size_t unset = std::size_t(-1);
+  std::vector<std::size_t> component(m.number_of_slots(), unset);
+  for(std::size_t k = 0; k < by_root.size(); ++k) {
+    if(k == 0 || partition.find(by_root[k]) != partition.find(by_root[k - 1]))
+      region.component_begin.push_back(k);
+    component[by_root[k]] = region.component_begin.size() - 1;
+  }
+  region.component_begin.push_back(by_root.size());
+  region.tets = std::move(by_root);
+  for(Tet_id t : met_by) region.component_of_missing.push_back(component[t]);
+  return region;
+}
+
+// A facet between a region tetrahedron and a kept one, in local vertex
+// ids, listed as the region tetrahedron lists it: orientation(x, a, b, c)
+// > 0 for x on the region's side.
+struct Region_wall
+{
+  Triangle_key key;
+  Vertex_id a, b, c;
+  friend bool operator<(const Region_wall& x, const Region_wall& y) { return x.key < y.key; }
+};
+
+// A component as TetGen's input: its vertices numbered locally, and the
+// complex of its walls, the missing triangles and the input triangles
+// between two of its tetrahedra or on the convex hull.  Its other facets on
+// the convex hull are left out: an input triangle in a hull plane may cross
+// them (flat faces of mechanical parts: 14% to 28% of the missing triangles
+// on couplingdown, anchor_dense and fandisk), so TetGen re-triangulates the
+// convex hull of the component's points (switch c), and carve_region keeps
+// what lies inside the walls.
+struct Local_problem
+{
+  std::vector<Vertex_id> vertex_of_local;
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<Vertex_id, 3>> triangles; // local ids
+  std::vector<Region_wall> walls;                  // sorted by key
+  double volume = 0;                               // six times the region's
+};
+
+// Component c of the region; `local` maps mesh vertices to local ids, all
+// unset (Vertex_id(-1)) before and after.  `with_hull_facets`: the
+// component's hull facets are constraints too (TetGen without switch c).
+inline Local_problem local_problem(const Flat_storage& m, const Recovery_region& region, std::size_t c,
+                                   const std::vector<Triangle_key>& input,
+                                   const std::vector<Triangle_key>& missing_here, std::vector<Vertex_id>& local,
+                                   bool with_hull_facets = false)
+{
+  Local_problem p;
+  const Vertex_id unset = Vertex_id(-1);
+  const Tet_id* first = region.tets.data() + region.component_begin[c];
+  const Tet_id* last = region.tets.data() + region.component_begin[c + 1];
+  for(const Tet_id* t = first; t != last; ++t) {
+    const Vertex_id* tv = m.vertex_ids(*t);
+    for(int i = 0; i < 4; ++i) {
+      if(local[tv[i]] != unset) continue;
+      local[tv[i]] = static_cast<Vertex_id>(p.vertex_of_local.size());
+      p.vertex_of_local.push_back(tv[i]);
+      p.points.push_back({m.point(tv[i])[0], m.point(tv[i])[1], m.point(tv[i])[2]});
+    }
+    p.volume += orientation_determinant(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]));
+  }
+  auto local_key = [&](const Triangle_key& k) { return Triangle_key::of(local[k.v[0]], local[k.v[1]], local[k.v[2]]); };
+
+  std::vector<Triangle_key> facets;
+  for(const Triangle_key& k : missing_here) facets.push_back(local_key(k));
+  for(const Tet_id* it = first; it != last; ++it)
+    for(int f = 0; f < 4; ++f) {
+      const Tet_id t = *it;
+      const Tet_id u = m.neighbor(t, f);
+      const Triangle_key k = facet_key(m, t, f);
+      if(m.is_ghost(u)) {
+        if(with_hull_facets || contains(input, k)) facets.push_back(local_key(k));
+      } else if(!region.in_region[u]) {
+        const Vertex_id* tv = m.vertex_ids(t);
+        p.walls.push_back({local_key(k), local[tv[facet_vertex[f][0]]], local[tv[facet_vertex[f][1]]],
+                           local[tv[facet_vertex[f][2]]]});
+        facets.push_back(local_key(k));
+      } else if(t < u && contains(input, k)) {
+        facets.push_back(local_key(k));
+      }
+    }
+  std::sort(p.walls.begin(), p.walls.end());
+  // A missing triangle is never a region facet, but a wall may be an input
+  // triangle: listed once.
+  std::sort(facets.begin(), facets.end());
+  facets.erase(std::unique(facets.begin(), facets.end()), facets.end());
+  p.triangles.reserve(facets.size());
+  for(const Triangle_key& k : facets) p.triangles.push_back({k.v[0], k.v[1], k.v[2]});
+  for(Vertex_id v : p.vertex_of_local) local[v] = unset;
+  return p;
+}
+
+// The tetrahedra of TetGen's mesh of the region's convex hull that lie
+// inside the region: from the region's side of each wall, across every
+// facet but the walls.  The region's complement in its convex hull touches
+// the region only at walls, since the region's other boundary facets lie on
+// the convex hull of the whole mesh.  Empty when TetGen's mesh does not
+// fit: a wall missing or split, a kept facet on the convex hull with a
+// Steiner point (only surface points may lie there), or another volume.
+inline std::vector<std::size_t> carve_region(const Local_problem& problem, const Tetgen_mesh& local)
+{
+  struct Keyed_facet
+  {
+    Triangle_key key;
+    std::uint32_t code; // 4 * tetrahedron + facet
+  };
+  const std::uint32_t none = std::uint32_t(-1);
+  const std::size_t n = local.tets.size();
+  std::vector<Keyed_facet> facets;
+  facets.reserve(4 * n);
+  for(std::size_t t = 0; t < n; ++t) {
+    const auto& tv = local.tets[t];
+    for(int f = 0; f < 4; ++f)
+      facets.push_back({Triangle_key::of(tv[facet_vertex[f][0]], tv[facet_vertex[f][1]], tv[facet_vertex[f][2]]),
+                        static_cast<std::uint32_t>(4 * t + f)});
+  }
+  std::sort(facets.begin(), facets.end(), [](const Keyed_facet& x, const Keyed_facet& y) { return x.key < y.key; });
+  std::vector<std::uint32_t> neighbour(4 * n, none);
+  for(std::size_t k = 0; k + 1 < facets.size(); ++k)
+    if(facets[k].key == facets[k + 1].key) {
+      if(k + 2 < facets.size() && facets[k + 2].key == facets[k].key) return {};
+      neighbour[facets[k].code] = facets[k + 1].code;
+      neighbour[facets[k + 1].code] = facets[k].code;
+    }
+
+  std::vector<char> wall(4 * n, 0), inside(n, 0);
+  std::vector<std::size_t> kept;
+  // No wall: the component is the whole mesh (a cube's six tetrahedra).
+  if(problem.walls.empty() && n > 0) {
+    inside[0] = 1;
+    kept.push_back(0);
+  }
+  for(const Region_wall& w : problem.walls) {
+    auto it = std::lower_bound(facets.begin(), facets.end(), w.key,
+                               [](const Keyed_facet& x, const Triangle_key& k) { return x.key < k; });
+    if(it == facets.end() || !(it->key == w.key)) return {};
+    int seeds = 0;
+    for(std::uint32_t code : {it->code, neighbour[it->code]}) {
+      if(code == none) continue;
+      wall[code] = 1;
+      const std::size_t t = code / 4;
+      const Vertex_id apex = local.tets[t][code % 4];
+      if(orientation(local.points[apex].data(), local.points[w.a].data(), local.points[w.b].data(),
+                     local.points[w.c].data()) <= 0)
+        continue;
+      ++seeds;
+      if(!inside[t]) {
+        inside[t] = 1;
+        kept.push_back(t);
+      }
+    }
+    if(seeds != 1) return {};
+  }
+  double volume = 0;
+  for(std::size_t k = 0; k < kept.size(); ++k) {
+    const std::size_t t = kept[k];
+    const auto& tv = local.tets[t];
+    volume += orientation_determinant(local.points[tv[0]].data(), local.points[tv[1]].data(),
+                                      local.points[tv[2]].data(), local.points[tv[3]].data());
+    for(int f = 0; f < 4; ++f) {
+      const std::uint32_t code = static_cast<std::uint32_t>(4 * t + f);
+      if(wall[code]) continue;
+      if(neighbour[code] == none) {
+        for(int i = 0; i < 3; ++i)
+          if(tv[facet_vertex[f][i]] >= problem.points.size()) return {};
+        continue;
+      }
+      const std::size_t u = neighbour[code] / 4;
+      if(!inside[u]) {
+        inside[u] = 1;
+        kept.push_back(u);
+      }
+    }
+  }
+  // The flood stays inside the walls; the volumes agreeing (the same volume
+  // tiled two ways, summed in floating point) is the check, costing nothing,
+  // that nothing outside the region was reached through the convex hull.
+  if(std::abs(volume - problem.volume) > 1e-9 * std::abs(problem.volume)) return {};
+  return kept;
+}
+
+// Small components recovered by flips of our own, before any TetGen call
+// (each costs a quarter of a millisecond even on two tetrahedra, most of it
+// TetGen's set-up): 2-3 flips across a facet, and removals of an edge whose
+// ring lies in the component, the ring's polygon re-triangulated (3-2 and
+// 4-4 flips and larger, and the 2-2 flip of two hull facets in one plane
+// when the ring is open on the convex hull).  A flip keeps the component's
+// walls; hull facets it replaces stay in their plane; every new tetrahedron
+// is checked positive exactly.  Greedy: each flip must add a wanted facet,
+// at most eight flips (a flat quadrilateral with the wrong diagonal takes
+// one, two neighbouring ones two, a cube's six faces six).
+struct Small_component
+{
+  std::vector<std::array<Vertex_id, 4>> tets;
+  std::vector<Triangle_key> walls; // facets shared with tetrahedra outside the region, sorted
+};
+
+inline std::size_t count_facets(const std::vector<std::array<Vertex_id, 4>>& tets,
+                                const std::vector<Triangle_key>& wanted)
+{
+  std::size_t n = 0;
+  for(const Triangle_key& k : wanted) {
+    bool found = false;
+    for(const auto& t : tets)
+      for(int f = 0; f < 4 && !found; ++f)
+        found = Triangle_key::of(t[facet_vertex[f][0]], t[facet_vertex[f][1]], t[facet_vertex[f][2]]) == k;
+    n += found;
+  }
+  return n;
+}
+
+// The component's tetrahedra with those in `removed` replaced by `added`.
+inline std::vector<std::array<Vertex_id, 4>> replaced(const std::vector<std::array<Vertex_id, 4>>& tets,
+                                                      const std::vector<std::size_t>& removed,
+                                                      const std::vector<std::array<Vertex_id, 4>>& added)
+{
+  std::vector<std::array<Vertex_id, 4>> out;
+  for(std::size_t i = 0; i < tets.size(); ++i)
+    if(std::find(removed.begin(), removed.end(), i) == removed.end()) out.push_back(tets[i]);
+  out.insert(out.end(), added.begin(), added.end());
+  return out;
+}
+
+class Component_flips
+{
+public:
+  // `wanted`: the component's missing triangles and the input triangles it has.
+  Component_flips(const Flat_storage& m, const Small_component& c, const std::vector<Triangle_key>& wanted)
+      : m_(m), tets_(c.tets), walls_(c.walls), wanted_(wanted)
+  {}
+
+  // The component re-tetrahedralised with every wanted facet, or empty.
+  std::vector<std::array<Vertex_id, 4>> run()
+  {
+    const int max_flips = 8;
+    std::size_t present = count_facets(tets_, wanted_);
+    for(int flip = 0; flip < max_flips && present < wanted_.size(); ++flip) {
+      hull_ = hull_facets();
+      present_ = present;
+      std::vector<std::array<Vertex_id, 4>> next;
+      for(std::size_t i = 0; i < tets_.size() && next.empty(); ++i)
+        for(std::size_t j = i + 1; j < tets_.size() && next.empty(); ++j) next = flip_2_3(i, j);
+      for(std::size_t i = 0; i < tets_.size() && next.empty(); ++i)
+        for(int a = 0; a < 4 && next.empty(); ++a)
+          for(int b = a + 1; b < 4 && next.empty(); ++b) next = remove_edge(tets_[i][a], tets_[i][b]);
+      if(next.empty()) return {};
+      tets_.swap(next);
+      present = count_facets(tets_, wanted_);
+    }
+    return present == wanted_.size() ? tets_ : std::vector<std::array<Vertex_id, 4>>();
+  }
+
+private:
+  int orient(Vertex_id a, Vertex_id b, Vertex_id c, Vertex_id d) const
+  {
+    return orientation(m_.point(a), m_.point(b), m_.point(c), m_.point(d));
+  }
+
+  // Facets of the component's boundary that are not walls, sorted.
+  std::vector<Triangle_key> hull_facets() const
+  {
+    std::vector<Triangle_key> facets;
+    for(const auto& t : tets_)
+      for(int f = 0; f < 4; ++f)
+        facets.push_back(Triangle_key::of(t[facet_vertex[f][0]], t[facet_vertex[f][1]], t[facet_vertex[f][2]]));
+    std::sort(facets.begin(), facets.end());
+    std::vector<Triangle_key> hull;
+    for(std::size_t k = 0; k < facets.size();) {
+      std::size_t e = k + 1;
+      while(e < facets.size() && facets[e] == facets[k]) ++e;
+      if(e - k == 1 && !contains(walls_, facets[k])) hull.push_back(facets[k]);
+      k = e;
+    }
+    return hull;
+  }
+
+  // The flipped tetrahedra, when every new one is positive and the flip
+  // adds a wanted facet without losing one; else empty.
+  std::vector<std::array<Vertex_id, 4>> accepted(const std::vector<std::size_t>& removed,
+                                                 const std::vector<std::array<Vertex_id, 4>>& added) const
+  {
+    for(const auto& t : added)
+      if(orient(t[0], t[1], t[2], t[3]) <= 0) return {};
+    std::vector<std::array<Vertex_id, 4>> out = replaced(tets_, removed, added);
+    return count_facets(out, wanted_) > present_ ? out : std::vector<std::array<Vertex_id, 4>>();
+  }
+
+  // Tetrahedra i and j sharing facet (a, b, c), with apexes p and q, become
+  // three around the edge pq, when pq crosses the facet's interior.
+  std::vector<std::array<Vertex_id, 4>> flip_2_3(std::size_t i, std::size_t j) const
+  {
+    const auto& s = tets_[i];
+    const auto& t = tets_[j];
+    for(int f = 0; f < 4; ++f) {
+      const Vertex_id a = s[facet_vertex[f][0]], b = s[facet_vertex[f][1]], c = s[facet_vertex[f][2]];
+      const Triangle_key k = Triangle_key::of(a, b, c);
+      for(int g = 0; g < 4; ++g) {
+        if(!(Triangle_key::of(t[facet_vertex[g][0]], t[facet_vertex[g][1]], t[facet_vertex[g][2]]) == k)) continue;
+        // (p, a, b, c) is an even permutation of s: p on the positive side of (a, b, c) read as CGAL does
+        // with p first; q on the other.
+        const Vertex_id p = s[f], q = t[g];
+        return accepted({i, j}, {{a, b, p, q}, {b, c, p, q}, {c, a, p, q}});
+      }
+    }
+    return {};
+  }
+
+  // Edge uv removed: the ring r0, r1, ... of its tetrahedra (u, v, r_i,
+  // r_i+1), all in the component, its polygon triangulated; each triangle (x, y, z) gives (x, y, z, v) and (y, x, z, u).  An open ring
+  // (uv on the convex hull) needs u, v, r0, r_last in one plane, r0 r_last
+  // crossing uv.
+  std::vector<std::array<Vertex_id, 4>> remove_edge(Vertex_id u, Vertex_id v) const
+  {
+    std::vector<std::size_t> around;
+    std::vector<std::array<Vertex_id, 2>> sides;
+    for(std::size_t i = 0; i < tets_.size(); ++i) {
+      const auto& t = tets_[i];
+      if(std::count(t.begin(), t.end(), u) == 0 || std::count(t.begin(), t.end(), v) == 0) continue;
+      std::array<Vertex_id, 2> xy;
+      int k = 0;
+      for(Vertex_id w : t)
+        if(w != u && w != v) xy[k++] = w;
+      if(orient(u, v, xy[0], xy[1]) < 0) std::swap(xy[0], xy[1]);
+      around.push_back(i);
+      sides.push_back(xy);
+    }
+    if(around.size() < 2) return {};
+    // The ring in order: from the side whose first vertex no side ends at
+    // (open ring), else from any.
+    std::size_t start = 0;
+    for(std::size_t i = 0; i < sides.size(); ++i) {
+      bool ends_here = false;
+      for(const auto& s : sides) ends_here = ends_here || s[1] == sides[i][0];
+      if(!ends_here) start = i;
+    }
+    std::vector<Vertex_id> ring{sides[start][0]};
+    for(std::size_t n = 0; n < sides.size(); ++n) {
+      auto next = std::find_if(sides.begin(), sides.end(),
+                               [&](const std::array<Vertex_id, 2>& s) { return s[0] == ring.back(); });
+      if(next == sides.end()) return {};
+      ring.push_back((*next)[1]);
+    }
+    const bool closed = ring.front() == ring.back();
+    if(closed) {
+      ring.pop_back();
+    } else {
+      const Triangle_key first = Triangle_key::of(u, v, ring.front()), last = Triangle_key::of(u, v, ring.back());
+      if(!contains(hull_, first) || !contains(hull_, last)) return {}; // the ring goes on outside
+      if(orient(u, v, ring.front(), ring.back()) != 0) return {};
+      const Vertex_id off = ring[1]; // not in that plane: (u, v, r0, r1) is a tetrahedron
+      if(orient(ring.front(), ring.back(), off, u) * orient(ring.front(), ring.back(), off, v) >= 0) return {};
+    }
+    const std::vector<std::array<Vertex_id, 4>> added = ring_triangulation(u, v, ring);
+    if(added.empty()) return {};
+    return accepted(around, added);
+  }
+
+  // A triangulation of the ring's polygon (closed by r_last r0) whose
+  // triangles (x, y, z), in ring order, give positive (x, y, z, v) and
+  // (y, x, z, u), and which has every chord xy that a wanted facet (x, y, u)
+  // or (x, y, v) needs: Klincsek's dynamic programme over sub-polygons,
+  // triangles crossing a needed chord forbidden.  Empty when there is none.
+  std::vector<std::array<Vertex_id, 4>> ring_triangulation(Vertex_id u, Vertex_id v,
+                                                           const std::vector<Vertex_id>& ring) const
+  {
+    const std::size_t n = ring.size();
+    if(n < 3) return {};
+    std::vector<std::array<std::size_t, 2>> needed;
+    for(std::size_t p = 0; p < n; ++p)
+      for(std::size_t q = p + 2; q < n; ++q)
+        if(!(p == 0 && q == n - 1) && (contains_wanted(Triangle_key::of(ring[p], ring[q], u)) ||
+                                       contains_wanted(Triangle_key::of(ring[p], ring[q], v))))
+          needed.push_back({p, q});
+    auto crosses_needed = [&](std::size_t a, std::size_t b) {
+      for(const auto& c : needed)
+        if((a < c[0] && c[0] < b && b < c[1]) || (c[0] < a && a < c[1] && c[1] < b)) return true;
+      return false;
+    };
+    const std::size_t none = std::size_t(-1);
+    // apex[i][j]: the third corner of the triangle on chord ij in a valid
+    // triangulation of ring[i..j]; none when that sub-polygon has none.
+    std::vector<std::vector<std::size_t>> apex(n, std::vector<std::size_t>(n, none));
+    for(std::size_t length = 2; length < n; ++length)
+      for(std::size_t i = 0; i + length < n; ++i) {
+        const std::size_t j = i + length;
+        if(crosses_needed(i, j)) continue;
+        for(std::size_t k = i + 1; k < j && apex[i][j] == none; ++k) {
+          if((k - i > 1 && apex[i][k] == none) || (j - k > 1 && apex[k][j] == none)) continue;
+          if(orient(ring[i], ring[k], ring[j], v) > 0 && orient(ring[k], ring[i], ring[j], u) > 0) apex[i][j] = k;
+        }
+      }
+    if(apex[0][n - 1] == none) return {};
+    std::vector<std::array<Vertex_id, 4>> added;
+    std::vector<std::array<std::size_t, 2>> chords{{0, n - 1}};
+    while(!chords.empty()) {
+      const std::size_t i = chords.back()[0], j = chords.back()[1];
+      chords.pop_back();
+      if(j - i < 2) continue;
+      const std::size_t k = apex[i][j];
+      added.push_back({ring[i], ring[k], ring[j], v});
+      added.push_back({ring[k], ring[i], ring[j], u});
+      chords.push_back({i, k});
+      chords.push_back({k, j});
+    }
+    return added;
+  }
+
+  bool contains_wanted(const Triangle_key& k) const
+  {
+    return std::find(wanted_.begin(), wanted_.end(), k) != wanted_.end();
+  }
+
+  const Flat_storage& m_;
+  std::vector<std::array<Vertex_id, 4>> tets_;
+  const std::vector<Triangle_key> walls_;
+  std::vector<Triangle_key> hull_;
+  const std::vector<Triangle_key>& wanted_;
+  std::size_t present_ = 0;
+};
+
+// Component c by flips when it has at most `max_tets` tetrahedra (larger
+// ones were not recovered by flips on CGAL's mechanical parts);
+// appends its new tetrahedra to `tets` and returns true, or returns false.
+// The flips must also keep the input triangles the component already had.
+inline bool recover_by_flips(const Flat_storage& m, const Recovery_region& region, std::size_t c,
+                             const std::vector<Triangle_key>& input, const std::vector<Triangle_key>& missing_here,
+                             std::vector<std::array<Vertex_id, 4>>& tets, std::size_t max_tets = 12)
+{
+  const std::size_t begin = region.component_begin[c], end = region.component_begin[c + 1];
+  if(end - begin > max_tets) return false;
+  Small_component component;
+  std::vector<Triangle_key> wanted = missing_here;
+  for(std::size_t k = begin; k < end; ++k) {
+    const Tet_id t = region.tets[k];
+    const Vertex_id* tv = m.vertex_ids(t);
+    component.tets.push_back({tv[0], tv[1], tv[2], tv[3]});
+    for(int f = 0; f < 4; ++f) {
+      const Triangle_key key = facet_key(m, t, f);
+      const Tet_id u = m.neighbor(t, f);
+      if(!m.is_ghost(u) && !region.in_region[u]) component.walls.push_back(key);
+      if(contains(input, key)) wanted.push_back(key);
+    }
+  }
+  std::sort(component.walls.begin(), component.walls.end());
+  std::sort(wanted.begin(), wanted.end());
+  wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+  const std::vector<std::array<Vertex_id, 4>> flipped = Component_flips(m, component, wanted).run();
+  if(flipped.empty()) return false;
+  tets.insert(tets.end(), flipped.begin(), flipped.end());
+  return true;
+}
+
+// RECOVERBOUNDARY of the region only, component by component; replaces
+// out.mesh and returns true, or leaves it untouched and returns false when
+// TetGen fails on a component or its mesh does not fit the walls.
+inline bool recover_locally(const std::vector<Triangle_key>& input, const std::vector<Triangle_key>& missing,
+                            Constrained_mesh& out, Recovery_report& report)
+{
+  const Flat_storage& m = out.mesh;
+  const Recovery_region region = recovery_region(m, missing);
+  report.region_tetrahedra = region.tets.size();
+  std::vector<std::vector<Triangle_key>> missing_in(region.number_of_components());
+  for(std::size_t i = 0; i < missing.size(); ++i) missing_in[region.component_of_missing[i]].push_back(missing[i]);
+
+  std::vector<std::array<double, 3>> points(m.vertices.size());
+  for(Vertex_id v = 0; v < m.vertices.size(); ++v) points[v] = {m.point(v)[0], m.point(v)[1], m.point(v)[2]};
+  std::vector<std::array<Vertex_id, 4>> tets;
+  tets.reserve(m.live_tets - m.ghost_tets);
+  for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+    if(!m.is_live(t) || m.is_ghost(t) || region.in_region[t]) continue;
+    const Vertex_id* tv = m.vertex_ids(t);
+    tets.push_back({tv[0], tv[1], tv[2], tv[3]});
+  }
+
+  std::vector<Vertex_id> local(m.vertices.size(), Vertex_id(-1));
+  std::size_t steiner = 0;
+  for(std::size_t c = 0; c < region.number_of_components(); ++c) {
+    if(recover_by_flips(m, region, c, input, missing_in[c], tets)) {
+      ++report.flipped_components;
+      continue;
+    }
+    ++report.tetgen_components;
+    Local_problem problem;
+    Tetgen_mesh mesh;
+    std::vector<std::size_t> kept;
+    // Hull facets left out first (the convex hull of the component's points
+    // meshed, then carved); then, should TetGen split a wall that way, as
+    // constraints too, TetGen removing what lies outside them: on
+    // couplingdown's one failing component this second try holds.
+    for(bool with_hull_facets : {false, true}) {
+      problem = local_problem(m, region, c, input, missing_in[c], local, with_hull_facets);
+      try {
+        mesh = tetgen_recovery(problem.points, problem.triangles, with_hull_facets ? "pYMO0zQ" : "pYcMO0zQ");
+      } catch(const std::runtime_error&) {
+        continue;
+      }
+      kept = carve_region(problem, mesh);
+      if(!kept.empty()) break;
+    }
+    if(kept.empty()) return false;
+    // Steiner points outside the component went with the tetrahedra dropped.
+    std::vector<Vertex_id> global(mesh.points.size(), Vertex_id(-1));
+    std::copy(problem.vertex_of_local.begin(), problem.vertex_of_local.end(), global.begin());
+    for(std::size_t t : kept) {
+      std::array<Vertex_id, 4> tv;
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_id v = mesh.tets[t][i];
+        if(global[v] == Vertex_id(-1)) {
+          global[v] = static_cast<Vertex_id>(points.size());
+          points.push_back(mesh.points[v]);
+          ++steiner;
+        }
+        tv[i] = global[v];
+      }
+      tets.push_back(tv);
+    }
+  }
+  out.mesh = flat_storage_from_tetrahedra(points, tets);
+  report.used_tetgen = report.tetgen_components > 0;
+  report.steiner_points = steiner;
+  return true;
 }
 
 // Lines 2-3 of Algorithm 2.
@@ -148,8 +888,10 @@ inline Recovery_report empty_mesh_and_recovery(const Surface_soup& soup, int thr
   const Clock::time_point t0 = Clock::now();
   empty_mesh(soup, threads, out);
   const Clock::time_point t1 = Clock::now();
-  report.missing_triangles = count_missing_facets(out.mesh, input_triangle_keys(soup, out.vertex_of_input));
-  if(report.missing_triangles != 0) recover_with_tetgen(soup, out, report);
+  const std::vector<Triangle_key> input = input_triangle_keys(soup, out.vertex_of_input);
+  const std::vector<Triangle_key> missing = missing_facets(out.mesh, input);
+  report.missing_triangles = missing.size();
+  if(!missing.empty() && !recover_locally(input, missing, out, report)) recover_with_tetgen(soup, out, report);
   report.empty_mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
   report.recovery_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
   set_box(soup.points, out);
