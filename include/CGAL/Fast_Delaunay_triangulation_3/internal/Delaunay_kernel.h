@@ -82,7 +82,7 @@ struct Insertion_scratch
   Raw_array<Tet_id> cavity;              // BFS queue, then the deleted tetrahedra
   Raw_array<Boundary_facet> boundary;    // facets of the cavity boundary
   Raw_array<Facet_code> boundary_inner;  // the same facets seen from the cavity, while searching
-  std::vector<Tet_id> ball;              // slots of the new tetrahedra
+  Raw_array<Tet_id> ball;              // slots of the new tetrahedra
   Raw_array<Vertex_id> boundary_vertices;  // numbered cavity boundary vertices, in order
   struct Half_edge { std::uint64_t key; Facet_code facet; };
   std::vector<Half_edge> large_edges;     // fallback adjacency for large cavities
@@ -595,14 +595,14 @@ private:
   // New tetrahedra reuse the cavity's slots (cache-hot), then free slots.
   void take_ball_slots(std::size_t facets)
   {
-    std::vector<Tet_id>& ball = s_.ball;
-    ball.clear();
+    Raw_array<Tet_id>& ball = s_.ball;
+    ball.resize(facets);
     const std::size_t reused = std::min(facets, s_.cavity.size());
-    ball.insert(ball.end(), s_.cavity.begin(), s_.cavity.begin() + reused);
+    std::copy(s_.cavity.begin(), s_.cavity.begin() + reused, ball.begin());
     for(std::size_t k = reused; k < s_.cavity.size(); ++k)
       slots_.give(s_.cavity[k]); // stays flagged deleted
     s_.ghost_delta -= static_cast<std::ptrdiff_t>(cavity_ghosts_);
-    while(ball.size() < facets) ball.push_back(slots_.take());
+    for(std::size_t k = reused; k < facets; ++k) ball[k] = slots_.take();
   }
 
   void write_ball_tet(Tet_id t, Vertex_id p, const Boundary_facet& b)

@@ -264,7 +264,7 @@ public:
       finish_single_insertion(scratch);
       return existing;
     }
-    ball = scratch.ball;
+    ball.assign(scratch.ball.begin(), scratch.ball.end());
     finish_single_insertion(scratch);
     return v;
   }
@@ -281,7 +281,7 @@ public:
     const bool filled = kernel.fill_hole(v, hole, n);
     CGAL_assertion(filled); // the mesh's own slots never run out
     (void)filled;
-    ball = scratch.ball;
+    ball.assign(scratch.ball.begin(), scratch.ball.end());
     hint_ = ball.front();
     finish_single_insertion(scratch);
     return v;
