@@ -248,27 +248,11 @@ void set_input_triangles(const Benchmark_surface& s, Mesh& mesh)
 Run run_tetgen(const Benchmark_surface& s, const std::string& quality_switches)
 {
   tetgenio in, out;
-  in.firstnumber = 0;
-  in.numberofpoints = static_cast<int>(s.points.size());
-  in.pointlist = new REAL[3 * s.points.size()];
-  for(std::size_t i = 0; i < s.points.size(); ++i)
-    for(int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = s.points[i][k];
+  CGAL::Fast_Delaunay_triangulation_3_internal::mesher::write_tetgen_plc(s.points, s.triangles, in);
   const std::vector<double> h = surface_sizes(s);
   in.numberofpointmtrs = 1;
   in.pointmtrlist = new REAL[s.points.size()];
   std::copy(h.begin(), h.end(), in.pointmtrlist);
-  in.numberoffacets = static_cast<int>(s.triangles.size());
-  in.facetlist = new tetgenio::facet[s.triangles.size()];
-  for(std::size_t t = 0; t < s.triangles.size(); ++t) {
-    tetgenio::facet& f = in.facetlist[t];
-    tetgenio::init(&f);
-    f.numberofpolygons = 1;
-    f.polygonlist = new tetgenio::polygon[1];
-    tetgenio::init(&f.polygonlist[0]);
-    f.polygonlist[0].numberofvertices = 3;
-    f.polygonlist[0].vertexlist = new int[3];
-    for(int i = 0; i < 3; ++i) f.polygonlist[0].vertexlist[i] = static_cast<int>(s.triangles[t][i]);
-  }
   // A: one attribute per region (the subdomains); m: sizes at the points; O0: no mesh improvement; z: from 0.
   std::string switches = quality_switches + "AmO0z";
   if(std::isfinite(s.maximum_size)) {

@@ -126,12 +126,11 @@ struct Tetgen_mesh
   std::vector<std::array<Vertex_id, 4>> tets;
 };
 
-// TetGen on the complex of `triangles` (indices into `points`).  Throws
-// std::runtime_error when TetGen fails or moves a given point.
-inline Tetgen_mesh tetgen_recovery(const std::vector<std::array<double, 3>>& points,
-                                   const std::vector<std::array<Vertex_id, 3>>& triangles, const char* switches)
+// Points (x, y, z) and triangles (three point indices, from 0) as TetGen's
+// piecewise linear complex; `in` owns the arrays (tetgenio frees them).
+template <class Points, class Triangles>
+void write_tetgen_plc(const Points& points, const Triangles& triangles, tetgenio& in)
 {
-  tetgenio in, result;
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(points.size());
   in.pointlist = new REAL[3 * points.size()];
@@ -149,6 +148,15 @@ inline Tetgen_mesh tetgen_recovery(const std::vector<std::array<double, 3>>& poi
     f.polygonlist[0].vertexlist = new int[3];
     for(int i = 0; i < 3; ++i) f.polygonlist[0].vertexlist[i] = static_cast<int>(triangles[t][i]);
   }
+}
+
+// TetGen on the complex of `triangles` (indices into `points`).  Throws
+// std::runtime_error when TetGen fails or moves a given point.
+inline Tetgen_mesh tetgen_recovery(const std::vector<std::array<double, 3>>& points,
+                                   const std::vector<std::array<Vertex_id, 3>>& triangles, const char* switches)
+{
+  tetgenio in, result;
+  write_tetgen_plc(points, triangles, in);
   std::string s(switches);
   try {
     tetrahedralize(&s[0], &in, &result);
