@@ -165,8 +165,8 @@ inline double in_sphere_determinant(const double* p, const double* q, const doub
 
 #if defined(__AVX2__) && defined(__FMA__)
 #define CGAL_FDT3_SIMD_RECORDS 1
-// Predicates on four points that are 32-byte vertex records (x, y, z,
-// scratch word), with the 4x4 matrix held in AVX registers: lane i of a
+// Predicates on four points (the coordinates of vertex records; only x, y, z
+// are read), with the 4x4 matrix held in AVX registers: lane i of a
 // register is point i.  The scalar forms spend most of their instructions on
 // loads and on products that several cofactors share; the cavity search
 // evaluates the in-sphere determinant ~45 times per inserted point and the
@@ -498,8 +498,8 @@ inline bool sign_bit(double x)
   return (bits >> 63) != 0;
 }
 
-// finite_cell_in_conflict for a, b, c, d that are vertex records (32 bytes
-// readable from each pointer).
+// finite_cell_in_conflict in the cavity search's form: the vectorised
+// determinant where AVX2 is available, the sign returned as data.
 inline bool finite_record_in_conflict(const double* a, const double* b, const double* c,
                                       const double* d, const double* p, const Static_filter& filter)
 {
