@@ -123,6 +123,7 @@ struct Sequential_ownership
 {
   static constexpr bool partitioned = false;
   bool owns(const Flat_storage&, Tet_id) const { return true; }
+  bool owns_across(const Vertex_id*, int) const { return true; }
 };
 
 // In a partitioned insertion, a tetrahedron belongs to a thread when all its
@@ -145,6 +146,16 @@ struct Partition_ownership
     return partition_of_vertex[tv[0]] == partition && partition_of_vertex[tv[1]] == partition &&
            partition_of_vertex[tv[2]] == partition &&
            (tv[3] == ghost_vertex || partition_of_vertex[tv[3]] == partition);
+  }
+  // Whether the kernel owns the tetrahedron of vertices `tv` entered from an
+  // owned one through the facet opposite tv[i]: the three shared vertices
+  // are owned, so only tv[i] is looked up (one load instead of four, and no
+  // short-circuit for the branch predictor).  Across a hull facet (tv[i] the
+  // ghost) the answer is yes: its vertex 0 is a shared one.
+  bool owns_across(const Vertex_id* tv, int i) const
+  {
+    const Vertex_id w = tv[i] == ghost_vertex ? tv[0] : tv[i];
+    return partition_of_vertex[w] == partition;
   }
 };
 
@@ -274,13 +285,16 @@ public:
       const int before = _mm256_movemask_pd(_mm256_cmp_pd(volumes, bound, _CMP_GT_OQ));
 #endif
       Tet_id next = Tet_id(-1);
+      int entry = 0; // the facet of `next` shared with t
       for(int k = 0; k < 4; ++k) {
         const int f = (first + k) & 3;
-        const Tet_id u = m_.neighbor(t, f);
+        const Facet_code code = m_.neighbor_code(t, f);
+        const Tet_id u = tet_of(code);
         if(u == previous) continue;
 #ifdef CGAL_FDT3_SIMD_RECORDS
         if(beyond & (1 << f)) {
           next = u;
+          entry = facet_of(code);
           break;
         }
         if(before & (1 << f)) continue;
@@ -289,11 +303,12 @@ public:
         q[f] = p;
         if(orientation(filter_, q[0], q[1], q[2], q[3]) < 0) {
           next = u;
+          entry = facet_of(code);
           break;
         }
       }
       if(next == Tet_id(-1)) break;
-      if(!ownership_.owns(m_, next)) return no_tet;
+      if(!ownership_.owns_across(m_.vertex_ids(next), entry)) return no_tet;
       previous = t;
       t = next;
       if(++steps > step_limit) return Walk::gives_up ? no_tet : locate_by_scan(p);
@@ -440,8 +455,11 @@ private:
       bool conflict = false;
       if(!(uv[1] & mark_bit)) {
         ++s_.stats.conflict_tests;
+        // Partitioned: ownership is read whatever the outcome, so that the
+        // only branch is on the rare foreign conflict, not on the coin toss.
+        const bool owned = ownership_.owns_across(uv, facet_of(code));
         conflict = in_conflict(u, p);
-        if(Ownership::partitioned && conflict && !ownership_.owns(m_, u)) {
+        if(Ownership::partitioned && (conflict & !owned)) {
           complete = false;
           return;
         }

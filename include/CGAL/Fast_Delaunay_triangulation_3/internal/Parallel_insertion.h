@@ -38,6 +38,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -180,6 +181,10 @@ public:
   }
 
   void set_vertices_in_mesh(std::size_t n) { vertices_in_mesh_ = n; }
+  // Every vertex of the mesh has an id below max(n, the ids of the points
+  // being inserted): the partitions of the records above are not computed.
+  // The default is every record.
+  void set_vertex_end(std::size_t n) { vertex_end_ = n; }
   void set_min_points_per_partition(std::size_t n) { min_points_per_partition_ = std::max<std::size_t>(n, 1); }
 
 private:
@@ -260,7 +265,13 @@ private:
       for(std::size_t i = chunk_begin(points.size(), chunks, c); i < chunk_begin(points.size(), chunks, c + 1); ++i)
         items[i] = {key_of(points[i]), points[i]};
     });
-    radix_sort(items, scratch_items, 3 * bits, partitions);
+    // A BRIO round arrives in the order of a finer Moore curve on the same
+    // box, whose keys nest the untransformed ones: then it is sorted already.
+    const bool in_order = std::is_sorted(items.begin(), items.end(),
+                                       [](const Key_value<std::uint32_t>& a, const Key_value<std::uint32_t>& b) {
+                                         return a.key < b.key;
+                                       });
+    if(!in_order) radix_sort(items, scratch_items, 3 * bits, partitions);
     std::vector<Key_value<std::uint32_t>>().swap(scratch_items); // not needed while the mesh grows
 
     // Partition j holds keys in [first_key[j], first_key[j + 1]).
@@ -281,9 +292,12 @@ private:
     for(std::size_t i = 0; i < items.size(); ++i) sorted[i] = items[i].value;
     std::vector<Key_value<std::uint32_t>>().swap(items);
 
-    // The partition of every vertex that may be in a tetrahedron.
+    // The partition of every vertex that may be in a tetrahedron: the ids
+    // below vertex_end_ and those of the points.  The records above them are
+    // later BRIO rounds, not in the mesh yet.
+    const std::size_t nv = std::min(m_.vertices.size(),
+                                    std::max<std::size_t>(vertex_end_, std::size_t(largest_id(points)) + 1));
     partition_of_vertex_.resize(m_.vertices.size());
-    const std::size_t nv = m_.vertices.size();
     const int vertex_chunks = chunk_count(nv, partitions);
     for_each_chunk(vertex_chunks, [&](int c) {
       for(std::size_t v = chunk_begin(nv, vertex_chunks, c); v < chunk_begin(nv, vertex_chunks, c + 1); ++v) {
@@ -344,6 +358,11 @@ private:
     resize_cell_arrays(next_fresh[partitions - 1]);
   }
 
+  static Vertex_id largest_id(const std::vector<Vertex_id>& points)
+  {
+    return points.empty() ? Vertex_id(0) : *std::max_element(points.begin(), points.end());
+  }
+
   void resize_cell_arrays(std::size_t slots)
   {
     // Each partition writes the fresh slots it uses; the unused ones are
@@ -382,6 +401,7 @@ private:
   std::uint64_t seed_;
   bool timed_;
   std::size_t vertices_in_mesh_ = 0;
+  std::size_t vertex_end_ = std::numeric_limits<std::size_t>::max();
   std::size_t min_points_per_partition_ = default_min_points_per_partition;
   std::vector<std::uint8_t> partition_of_vertex_;
 };

@@ -24,6 +24,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -145,18 +146,12 @@ public:
     const std::size_t first_new = number_of_vertices();
     Brio_order order = brio_order(xyz, n, seed, partitions);
     mesh.vertices.resize(first_new + n);
-    for(std::size_t i = 0; i < n; ++i) {
-      Vertex_record& r = mesh.vertices[first_new + i];
-      const double* p = xyz + 3 * std::size_t(order.order[i]);
-      r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
-      r.scratch = 0;
-    }
+    write_vertex_records(xyz, order.order, first_new);
     if(consumed != nullptr) {
       CGAL_assertion(consumed->data() == xyz);
       std::vector<double>().swap(*consumed);
       xyz = nullptr;
     }
-    extend_bounding_box(first_new);
     const Clock::time_point t1 = Clock::now();
     last_report.sort_seconds = seconds(t0, t1);
 
@@ -353,6 +348,43 @@ private:
 
   // Grows the bounding box of all vertices (kept incrementally: single-point
   // insertions must not scan the vertices).
+  // Vertex records first_new + i = point order[i] of xyz, written (random
+  // reads of the input) on the threads of the partitioned engine, each chunk
+  // with its own bounding box, which then extends the triangulation's.
+  void write_vertex_records(const double* xyz, const std::vector<std::uint32_t>& order, std::size_t first_new)
+  {
+    const std::size_t n = order.size();
+    const int chunks = chunk_count(n, partitions);
+    std::vector<std::array<double, 6>> boxes(chunks);
+    for_each_chunk(chunks, [&](int c) {
+      double lo[3], hi[3];
+      for(int a = 0; a < 3; ++a) {
+        lo[a] = std::numeric_limits<double>::infinity();
+        hi[a] = -std::numeric_limits<double>::infinity();
+      }
+      const std::size_t end = chunk_begin(n, chunks, c + 1);
+      for(std::size_t i = chunk_begin(n, chunks, c); i < end; ++i) {
+        Vertex_record& r = mesh.vertices[first_new + i];
+        const double* p = xyz + 3 * std::size_t(order[i]);
+        for(int a = 0; a < 3; ++a) {
+          r.xyz[a] = p[a];
+          lo[a] = std::min(lo[a], p[a]);
+          hi[a] = std::max(hi[a], p[a]);
+        }
+        r.scratch = 0;
+      }
+      for(int a = 0; a < 3; ++a) {
+        boxes[c][a] = lo[a];
+        boxes[c][3 + a] = hi[a];
+      }
+    });
+    for(const std::array<double, 6>& b : boxes)
+      for(int a = 0; a < 3; ++a) {
+        box_lo_[a] = std::min(box_lo_[a], b[a]);
+        box_hi_[a] = std::max(box_hi_[a], b[3 + a]);
+      }
+  }
+
   void extend_bounding_box(std::size_t first)
   {
     for(std::size_t v = first; v < number_of_vertices(); ++v)
@@ -385,8 +417,14 @@ private:
                                  Sub_determinant_filter::for_box(box_lo_, box_hi_), box_lo_, box_hi_,
                                  seed, timed);
     engine.set_vertices_in_mesh(first_new);
+    // The vertices of the mesh: the old ones, the earlier rounds' and the
+    // initial simplex's (which may come from any round).
+    std::size_t simplex_end = 0;
+    if(skip != nullptr)
+      for(int k = 0; k < 4; ++k) simplex_end = std::max<std::size_t>(simplex_end, std::size_t(skip[k]) + 1);
     std::size_t begin = 0;
     for(std::size_t r = 0; r < round_end.size(); ++r) {
+      engine.set_vertex_end(std::max<std::size_t>(first_new + begin, simplex_end));
       engine.insert(vertex_list(first_new + begin, first_new + round_end[r], skip), r == 0 ? 1 : partitions,
                     first_new, duplicate_of, hint_,
                     last_report.rounds, last_report.kernel);
