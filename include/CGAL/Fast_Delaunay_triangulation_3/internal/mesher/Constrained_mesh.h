@@ -156,25 +156,41 @@ inline Flat_storage flat_storage_from_tetrahedra(const std::vector<std::array<do
   for(std::size_t t = 0; t < tets.size(); ++t)
     for(int i = 0; i < 4; ++i) m.tets[t].v[i] = tets[t][i];
 
-  struct Keyed_facet { Triangle_key key; Facet_code code; };
-  std::vector<Keyed_facet> facets;
-  facets.reserve(4 * tets.size());
+  // Facets bucketed by their smallest vertex (a counting sort), then each
+  // bucket, a few dozen facets, sorted by the other two vertices: the same
+  // order as sorting all 4T facet keys, which took most of this function's
+  // time.  Equal keys are the two sides of a facet; a lone key is a hull facet.
+  std::vector<std::size_t> bucket_begin(points.size() + 1, 0);
   for(Tet_id t = 0; t < tets.size(); ++t)
-    for(int f = 0; f < 4; ++f) facets.push_back({facet_key(m, t, f), facet_code(t, f)});
-  std::sort(facets.begin(), facets.end(),
-            [](const Keyed_facet& x, const Keyed_facet& y) { return x.key < y.key; });
-
+    for(int f = 0; f < 4; ++f) ++bucket_begin[facet_key(m, t, f).v[0] + 1];
+  for(std::size_t v = 0; v < points.size(); ++v) bucket_begin[v + 1] += bucket_begin[v];
+  struct Bucketed_facet { Vertex_id b, c; Facet_code code; };
+  std::vector<Bucketed_facet> facets(4 * tets.size());
+  {
+    std::vector<std::size_t> next(bucket_begin.begin(), bucket_begin.end() - 1);
+    for(Tet_id t = 0; t < tets.size(); ++t)
+      for(int f = 0; f < 4; ++f) {
+        const Triangle_key key = facet_key(m, t, f);
+        facets[next[key.v[0]]++] = {key.v[1], key.v[2], facet_code(t, f)};
+      }
+  }
+  auto same_key = [](const Bucketed_facet& x, const Bucketed_facet& y) { return x.b == y.b && x.c == y.c; };
   std::vector<Facet_code> hull;
-  for(std::size_t k = 0; k < facets.size();) {
-    if(k + 1 < facets.size() && facets[k].key == facets[k + 1].key) {
-      if(k + 2 < facets.size() && facets[k].key == facets[k + 2].key)
-        throw std::logic_error("Tetrahedral_mesher: a facet shared by three tetrahedra after recovery");
-      m.neighbor_code(facets[k].code) = facets[k + 1].code;
-      m.neighbor_code(facets[k + 1].code) = facets[k].code;
-      k += 2;
-    } else {
-      hull.push_back(facets[k].code);
-      k += 1;
+  for(std::size_t v = 0; v < points.size(); ++v) {
+    const std::size_t end = bucket_begin[v + 1];
+    std::sort(facets.begin() + bucket_begin[v], facets.begin() + end,
+              [](const Bucketed_facet& x, const Bucketed_facet& y) { return x.b != y.b ? x.b < y.b : x.c < y.c; });
+    for(std::size_t k = bucket_begin[v]; k < end;) {
+      if(k + 1 < end && same_key(facets[k], facets[k + 1])) {
+        if(k + 2 < end && same_key(facets[k], facets[k + 2]))
+          throw std::logic_error("Tetrahedral_mesher: a facet shared by three tetrahedra after recovery");
+        m.neighbor_code(facets[k].code) = facets[k + 1].code;
+        m.neighbor_code(facets[k + 1].code) = facets[k].code;
+        k += 2;
+      } else {
+        hull.push_back(facets[k].code);
+        k += 1;
+      }
     }
   }
 
