@@ -85,7 +85,7 @@ struct Insertion_scratch
   Raw_array<Tet_id> ball;              // slots of the new tetrahedra
   Raw_array<Vertex_id> boundary_vertices;  // numbered cavity boundary vertices, in order
   struct Half_edge { std::uint64_t key; Facet_code facet; };
-  std::vector<Half_edge> large_edges;     // fallback adjacency for large cavities
+  std::vector<Half_edge> large_edges;     // hash table of the large cavities' edges
   Facet_code edge_table[table_size * table_size];
   std::uint32_t random_state = 0x9e3779b9u;
   bool timed = false;
@@ -601,7 +601,7 @@ private:
       glue_with_table(p);
       ++s_.stats.small_cavities;
     } else {
-      glue_with_sorted_edges(p);
+      glue_with_edge_hash(p);
       ++s_.stats.large_cavities;
     }
     clear_boundary_numbers();
@@ -638,7 +638,7 @@ private:
   // is always 0) and are cleared after the Delaunay ball.  Numbering happens
   // while the boundary facet is recorded, when the vertex is in cache anyway.
   // Past 31 vertices the numbers are meaningless (saturated) and the ball
-  // uses the sorted fallback.
+  // uses the hashed fallback.
   // Whether v is new on the boundary is, again, a branch no predictor
   // learns: v is written at the end of the list either way and the count
   // moves only for a new one.
@@ -684,34 +684,54 @@ private:
 
   // Fallback for cavities with more than 31 boundary vertices: half-edges
   // sorted by directed edge, each matched with its reverse.
-  void glue_with_sorted_edges(Vertex_id p)
+  // Large cavities (the mesher's first refinement passes make cavities of
+  // hundreds of tetrahedra): the directed boundary edges in an open-addressing
+  // hash table twice their number, then each edge finds its reverse there.
+  // Linear in the cavity; the sort and binary searches it replaces were
+  // most of the mesher's ball time.
+  void glue_with_edge_hash(Vertex_id p)
   {
-    auto& edges = s_.large_edges;
-    edges.clear();
-    auto key = [](Vertex_id from, Vertex_id to) {
-      return (static_cast<std::uint64_t>(from) << 32) | to;
-    };
+    auto key = [](Vertex_id from, Vertex_id to) { return (static_cast<std::uint64_t>(from) << 32) | to; };
+    // Vertex ids are below 2^31: no edge has this key.
+    constexpr std::uint64_t empty = ~std::uint64_t(0);
     const std::size_t facets = s_.boundary.size();
+    std::size_t capacity = 64;
+    while(capacity < 6 * facets) capacity *= 2;
+    const int shift = 64 - __builtin_ctzll(capacity);
+    auto& table = s_.large_edges;
+    table.assign(capacity, {empty, 0});
+    auto slot_of = [&](std::uint64_t k) {
+      return static_cast<std::size_t>((k * 0x9e3779b97f4a7c15ull) >> shift);
+    };
+    auto put = [&](std::uint64_t k, Facet_code facet) {
+      std::size_t i = slot_of(k);
+      while(table[i].key != empty) i = (i + 1) & (capacity - 1);
+      table[i] = {k, facet};
+    };
+    auto find = [&](std::uint64_t k) -> Facet_code {
+      std::size_t i = slot_of(k);
+      while(table[i].key != k) {
+        CGAL_assertion(table[i].key != empty);
+        i = (i + 1) & (capacity - 1);
+      }
+      return table[i].facet;
+    };
     for(std::size_t k = 0; k < facets; ++k) {
       const Boundary_facet& b = s_.boundary[k];
       const Tet_id t = s_.ball[k];
       write_ball_tet(t, p, b);
-      edges.push_back({key(b.v[1], b.v[2]), facet_code(t, 1)});
-      edges.push_back({key(b.v[2], b.v[0]), facet_code(t, 2)});
-      edges.push_back({key(b.v[0], b.v[1]), facet_code(t, 3)});
+      put(key(b.v[1], b.v[2]), facet_code(t, 1));
+      put(key(b.v[2], b.v[0]), facet_code(t, 2));
+      put(key(b.v[0], b.v[1]), facet_code(t, 3));
     }
-    std::sort(edges.begin(), edges.end(),
-              [](const Insertion_scratch::Half_edge& x, const Insertion_scratch::Half_edge& y) {
-                return x.key < y.key;
-              });
-    for(const auto& e : edges) {
-      const std::uint64_t reverse = (e.key << 32) | (e.key >> 32);
-      auto it = std::lower_bound(edges.begin(), edges.end(), reverse,
-                                 [](const Insertion_scratch::Half_edge& x, std::uint64_t k) {
-                                   return x.key < k;
-                                 });
-      CGAL_assertion(it != edges.end() && it->key == reverse);
-      m_.neighbor_code(e.facet) = it->facet;
+    // Facet i of a new tetrahedron holds p and the edge opposite b.v[i - 1];
+    // across it lies the tetrahedron that has the same edge reversed.
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = s_.boundary[k];
+      const Tet_id t = s_.ball[k];
+      m_.neighbor_code(facet_code(t, 1)) = find(key(b.v[2], b.v[1]));
+      m_.neighbor_code(facet_code(t, 2)) = find(key(b.v[0], b.v[2]));
+      m_.neighbor_code(facet_code(t, 3)) = find(key(b.v[1], b.v[0]));
     }
   }
 
