@@ -89,12 +89,12 @@ inline bool contains(const std::vector<Triangle_key>& sorted, const Triangle_key
 inline std::vector<Triangle_key> missing_facets(const Flat_storage& m, const std::vector<Triangle_key>& wanted)
 {
   std::vector<char> found(wanted.size(), 0);
+  const Triangles_by_smallest_vertex lookup(wanted, m.vertices.size());
   for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
     if(!m.is_live(t) || m.is_ghost(t)) continue;
     for(int f = 0; f < 4; ++f) {
-      const Triangle_key k = facet_key(m, t, f);
-      auto it = std::lower_bound(wanted.begin(), wanted.end(), k);
-      if(it != wanted.end() && *it == k) found[it - wanted.begin()] = 1;
+      const std::size_t i = lookup.find(facet_key(m, t, f));
+      if(i != Triangles_by_smallest_vertex::none) found[i] = 1;
     }
   }
   std::vector<Triangle_key> missing;

@@ -28,31 +28,16 @@ inline void flag_constrained_facets(const Surface_soup& soup, Constrained_mesh& 
   const std::vector<Triangle_key> keys = input_triangle_keys(soup, cm.vertex_of_input);
   std::vector<char> found(keys.size(), 0);
   const Flat_storage& m = cm.mesh;
-  // The input triangles listed by their smallest vertex (a vertex starts two
-  // on average): a facet is looked up among a handful, where a binary search
-  // over all of them cost ~15 unpredictable branches per facet.
-  std::vector<std::size_t> first(m.vertices.size() + 1, 0);
-  for(const Triangle_key& k : keys) ++first[k.v[0] + 1];
-  for(std::size_t v = 0; v < m.vertices.size(); ++v) first[v + 1] += first[v];
-  std::vector<std::size_t> by_vertex(keys.size());
-  {
-    std::vector<std::size_t> next(first.begin(), first.end() - 1);
-    for(std::size_t i = 0; i < keys.size(); ++i) by_vertex[next[keys[i].v[0]]++] = i;
-  }
+  const Triangles_by_smallest_vertex lookup(keys, m.vertices.size());
   for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
     cm.constrained[t] = 0;
     if(!m.is_live(t)) continue;
     for(int f = 0; f < 4; ++f) {
       if(m.is_ghost(t) && f != 3) continue;
-      const Triangle_key k = facet_key(m, t, f);
-      if(k.v[2] == ghost_vertex) continue;
-      for(std::size_t j = first[k.v[0]]; j < first[k.v[0] + 1]; ++j) {
-        const std::size_t i = by_vertex[j];
-        if(keys[i] == k) {
-          cm.constrained[t] |= std::uint8_t(1u << f);
-          found[i] = 1;
-          break;
-        }
+      const std::size_t i = lookup.find(facet_key(m, t, f));
+      if(i != Triangles_by_smallest_vertex::none) {
+        cm.constrained[t] |= std::uint8_t(1u << f);
+        found[i] = 1;
       }
     }
   }
