@@ -368,8 +368,17 @@ private:
   void filter_points(std::vector<Refinement_point>& points) const
   {
     if(points.empty()) return;
-    double cell = std::numeric_limits<double>::infinity();
-    for(const Refinement_point& r : points) cell = std::min(cell, options_.min_edge_ratio * r.h);
+    // Any cell size gives the same answer (a point looks at every cell its
+    // radius reaches); it only sets the cost.  The smallest radius made the
+    // points of large h probe hundreds of mostly empty cells; the largest
+    // fills the cells of small h with many points.  The 90th percentile of
+    // the radii, measured on bunny00 (filter time, same mesh): smallest
+    // 0.99 s, median 0.30 s, 90th percentile 0.20 s, largest 0.29 s.
+    std::vector<double> radii(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i) radii[i] = options_.min_edge_ratio * points[i].h;
+    const std::size_t at = std::min(points.size() - 1, points.size() * 9 / 10);
+    std::nth_element(radii.begin(), radii.begin() + at, radii.end());
+    const double cell = radii[at];
     auto cell_of = [cell](double x) { return static_cast<std::int64_t>(std::floor(x / cell)); };
     Cell_lists grid(points.size());
     std::vector<Refinement_point> kept;
