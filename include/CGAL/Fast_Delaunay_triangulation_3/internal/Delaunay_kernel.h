@@ -689,7 +689,7 @@ private:
   // hash table twice their number, then each edge finds its reverse there.
   // Linear in the cavity; the sort and binary searches it replaces were
   // most of the mesher's ball time.
-  void glue_with_edge_hash(Vertex_id p)
+  __attribute__((noinline)) void glue_with_edge_hash(Vertex_id p)
   {
     auto key = [](Vertex_id from, Vertex_id to) { return (static_cast<std::uint64_t>(from) << 32) | to; };
     // Vertex ids are below 2^31: no edge has this key.
