@@ -574,6 +574,66 @@ TEST(Lower_dimensional_insertion, OnePointAtATimeWithHints)
   EXPECT_EQ(fast.dimension(), 3);
 }
 
+// CGAL changes some cells in place below dimension 3 and they keep their
+// infos: the cell of the empty triangulation becomes the infinite point cell,
+// each change of dimension extends every cell by a vertex, and in dimension 1
+// a split segment keeps one of its ends.  After every insertion the
+// triangulation's cells, by their vertices, carry the same infos as CGAL's;
+// then each cell still without one gets the next label, in key order.
+TEST(Lower_dimensional_insertion, CellInfosFollowCellsChangedInPlace)
+{
+  typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
+                                               CGAL::Triangulation_cell_base_with_info_3<std::string, K>>
+      Tds;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds> Fast_info;
+  typedef CGAL::Delaunay_triangulation_3<K, Tds> Cgal_info;
+  // Collinear points splitting segments and extending the line at both ends,
+  // then coplanar ones.
+  const std::vector<Point> points = {Point(0, 0, 0), Point(4, 0, 0), Point(2, 0, 0), Point(-2, 0, 0),
+                                     Point(3, 0, 0), Point(9, 0, 0), Point(1, 0, 0), Point(3, 3, 0),
+                                     Point(1, -2, 0), Point(2, 1, 0), Point(-5, 5, 0)};
+  Fast_info fast;
+  Cgal_info cgal;
+  // Every cell of the triangulation, once: the point cells below dimension 1.
+  auto cells = [](const auto& tr) {
+    std::vector<decltype(tr.infinite_cell())> c;
+    if(tr.dimension() == 2)
+      for(auto f = tr.all_facets_begin(); f != tr.all_facets_end(); ++f) c.push_back(f->first);
+    else if(tr.dimension() == 1)
+      for(auto e = tr.all_edges_begin(); e != tr.all_edges_end(); ++e) c.push_back(e->first);
+    else {
+      c.push_back(tr.infinite_cell());
+      if(tr.dimension() == 0) c.push_back(tr.infinite_cell()->neighbor(0));
+    }
+    return c;
+  };
+  auto infos = [&cells](const auto& tr) {
+    std::vector<std::pair<Simplex_key, std::string>> l;
+    for(auto c : cells(tr)) l.emplace_back(cell_key(tr, c), c->info());
+    return sorted(l);
+  };
+  int next_label = 0;
+  auto label_new_cells = [&](auto& tr, int first_label) {
+    std::vector<std::pair<Simplex_key, decltype(tr.infinite_cell())>> unlabelled;
+    for(auto c : cells(tr))
+      if(c->info().empty()) unlabelled.emplace_back(cell_key(tr, c), c);
+    std::sort(unlabelled.begin(), unlabelled.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(auto& u : unlabelled) u.second->info() = "cell " + std::to_string(first_label++);
+    return first_label;
+  };
+  fast.infinite_cell()->info() = cgal.infinite_cell()->info() = "empty";
+  for(std::size_t k = 0; k < points.size(); ++k) {
+    SCOPED_TRACE("point " + std::to_string(k));
+    fast.insert(points[k]);
+    cgal.insert(points[k]);
+    ASSERT_EQ(fast.dimension(), cgal.dimension());
+    EXPECT_EQ(infos(fast), infos(cgal));
+    label_new_cells(fast, next_label);
+    next_label = label_new_cells(cgal, next_label);
+  }
+  EXPECT_EQ(fast.dimension(), 2);
+}
+
 // A cell info set on a triangle survives insertions that do not destroy the
 // triangle, as in CGAL; a new triangle gets Info() (CGAL leaves a plain int
 // uninitialised there, so only the old triangles are compared).

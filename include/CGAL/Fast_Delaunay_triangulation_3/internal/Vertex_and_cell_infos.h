@@ -14,6 +14,9 @@
 //                 to Info() when next read.  A Delaunay cell destroyed by an
 //                 insertion never comes back (it is in conflict with the new
 //                 vertex for good), so equal vertex ids mean the same cell.
+//                 Below dimension 3 CGAL also changes some cells in place
+//                 (Lower_dimensional_triangulation::Renamed_cell): their
+//                 infos are re-keyed to the new vertex ids.
 //
 // Without infos (the default data structure) both arrays are empty types
 // and insertion takes the plain path: nothing is paid for them.
@@ -114,6 +117,13 @@ public:
     return e.info;
   }
 
+  // The cell of slot t, which had the vertices `before`, now has those of m.
+  void rename(const Flat_storage& m, Tet_id t, const Vertex_id* before)
+  {
+    if(t >= entries_.size() || !std::equal(before, before + 4, entries_[t].cell)) return;
+    std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, entries_[t].cell);
+  }
+
   void clear() { entries_.clear(); }
 
 private:
@@ -130,6 +140,7 @@ template <>
 class Cell_infos<void>
 {
 public:
+  void rename(const Flat_storage&, Tet_id, const Vertex_id*) {}
   void clear() {}
 };
 
