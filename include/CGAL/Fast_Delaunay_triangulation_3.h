@@ -667,16 +667,25 @@ public:
     return vertices_on_conflict_zone_boundary(p, c, res);
   }
 
-  // ---------------------------------------------------------------- segment traverser (dimension 3)
+  // ---------------------------------------------------------------- segment traverser (dimensions 3 and 2)
   // The cells and the faces met by the segment [p, q] (or [vs, vt]) in
-  // order, p in the convex hull (see Segment_traverser.h).
+  // order (see Segment_traverser.h); p may lie outside the hull.  In
+  // dimension 2, CGAL's cell traverser on CGAL's triangulation beside the
+  // arrays answers, p and q in the plane of the points; the simplices need
+  // dimension 3 (CGAL 5.5's simplex traverser crashes in dimension 2).
   Segment_cell_iterator segment_traverser_cells_begin(const Point& p, const Point& q,
                                                       Cell_handle hint = Cell_handle()) const
   {
+    if(dimension() == 2)
+      return Segment_cell_iterator(planar_segment_cells(
+          lower().delaunay().segment_traverser_cells_begin(to_reference(p), to_reference(q), to_reference(hint))));
     return Segment_cell_iterator(segment_walk(p, q, hint).cells);
   }
   Segment_cell_iterator segment_traverser_cells_begin(Vertex_handle vs, Vertex_handle vt) const
   {
+    if(dimension() == 2)
+      return Segment_cell_iterator(
+          planar_segment_cells(lower().delaunay().segment_traverser_cells_begin(to_reference(vs), to_reference(vt))));
     return Segment_cell_iterator(segment_walk(vs, vt).cells);
   }
   Segment_cell_iterator segment_traverser_cells_end() const { return Segment_cell_iterator(); }
@@ -760,7 +769,7 @@ public:
     return Vertex_handle(anchor_.get(), Fast_Delaunay_triangulation_3_internal::ghost_vertex);
   }
   // Below dimension 3, a triangle, segment or point cell that has the infinite
-  // vertex (null in dimension -1).
+  // vertex; in dimension -1 the cell that holds only the infinite vertex.
   Cell_handle infinite_cell() const { return anchor_->infinite_cell(); }
 
   bool is_infinite(Vertex_handle v) const { return v.index() == Fast_Delaunay_triangulation_3_internal::ghost_vertex; }
@@ -1474,8 +1483,7 @@ private:
     Locate_type lt;
     int li, lj;
     const Cell_handle c = locate(p, lt, li, lj, hint);
-    if(lt == OUTSIDE_CONVEX_HULL)
-      throw std::invalid_argument("segment traverser: the segment's source lies outside the convex hull");
+    if(lt == OUTSIDE_CONVEX_HULL) return Segment_walk(this, p, q).run_from_outside(c);
     unsigned mask = 15u;
     if(lt == VERTEX) mask = 1u << li;
     else if(lt == EDGE) mask = (1u << li) | (1u << lj);
@@ -1487,6 +1495,12 @@ private:
     CGAL_precondition(dimension() == 3 && vs != vt && !is_infinite(vs) && !is_infinite(vt));
     const Cell_handle c = vs->cell();
     return Segment_walk(this, vs->point(), vt->point()).run({c, 1u << c->index(vs)});
+  }
+  std::vector<Cell_handle> planar_segment_cells(typename Lower::Delaunay::Segment_cell_iterator it) const
+  {
+    std::vector<Cell_handle> cells;
+    for(; it != lower().delaunay().segment_traverser_cells_end(); ++it) cells.push_back(from_reference(Reference_cell(it)));
+    return cells;
   }
   std::vector<Simplex> simplices_of(const Segment_walk_result& walk) const
   {
