@@ -47,7 +47,7 @@ public:
   Storage_anchor(const Storage_anchor& other)
       : traits(other.traits), core(other.core), incident_cells(other.incident_cells),
         vertex_infos(other.vertex_infos), cell_infos(other.cell_infos), user_vertices(other.user_vertices),
-        user_cells(other.user_cells)
+        user_cells(other.user_cells), dimension_seen_(other.dimension_seen_), vertices_seen_(other.vertices_seen_)
   {
     user_vertices.attach(this);
   }
@@ -61,6 +61,8 @@ public:
     cell_infos.clear();
     user_vertices.clear();
     user_cells.clear();
+    dimension_seen_ = -1;
+    vertices_seen_ = 0;
   }
 
   Geom_traits traits;
@@ -72,16 +74,27 @@ public:
   User_cells<typename Tr::User_cell_record> user_cells;
 
   // After an insertion: new vertices get Info() and a default user vertex
-  // base; cells CGAL changed in place below dimension 3 keep theirs.
+  // base; cells CGAL changed in place below dimension 3 keep theirs, and so
+  // do the triangles that one new vertex lifts to tetrahedra.  (When several
+  // new vertices lift the dimension, which cells CGAL keeps depends on its
+  // insertion order: all get Info().)
   void vertices_added()
   {
-    vertex_infos.resize(core.number_of_vertices());
-    user_vertices.resize(this, core.number_of_vertices());
-    if(!core.lower.active()) return;
-    for(const auto& r : core.lower.take_renamed_cells()) {
-      cell_infos.rename(core.mesh, r.slot, r.before);
-      user_cells.rename(core.mesh, r.slot, r.before);
+    const std::size_t n = core.number_of_vertices();
+    vertex_infos.resize(n);
+    user_vertices.resize(this, n);
+    if(core.lower.active()) {
+      for(const auto& r : core.lower.take_renamed_cells()) {
+        cell_infos.rename(core.mesh, r.slot, r.before);
+        user_cells.rename(core.mesh, r.slot, r.before);
+      }
+    } else if(dimension_seen_ == 2 && dimension() == 3 && n == vertices_seen_ + 1) {
+      const Lifted_cells lifted(core.mesh, static_cast<Vertex_id>(n - 1));
+      cell_infos.lift(core.mesh, lifted);
+      user_cells.lift(core.mesh, lifted);
     }
+    dimension_seen_ = dimension();
+    vertices_seen_ = n;
   }
 
   // ---------------------------------------------------------------- read by handles and iterators
@@ -180,6 +193,10 @@ public:
   }
 
 private:
+  // The dimension and vertex count at the end of the last insertion.
+  int dimension_seen_ = -1;
+  std::size_t vertices_seen_ = 0;
+
   void build_incident_cells() const
   {
     const Flat_storage& m = core.mesh;

@@ -37,6 +37,7 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_and_cell_infos.h>
 
 #include <CGAL/Triangulation_data_structure_3.h>
 #include <CGAL/Triangulation_ds_vertex_base_3.h>
@@ -288,11 +289,28 @@ public:
     return records_[t];
   }
 
-  // As Cell_infos::rename.
+  // As Cell_infos::rename and Cell_infos::lift.
   void rename(const Flat_storage& m, Tet_id t, const Vertex_id* before)
   {
     if(t >= records_.size() || !std::equal(before, before + 4, cells_[t].begin())) return;
     std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, cells_[t].begin());
+  }
+  void lift(const Flat_storage& m, const Lifted_cells& lifted)
+  {
+    std::vector<Record> records;
+    std::vector<std::array<Vertex_id, 4>> cells;
+    records.swap(records_);
+    cells.swap(cells_);
+    for(std::size_t s = 0; s < records.size(); ++s) {
+      const Tet_id t = lifted.find(cells[s].data());
+      if(t == Lifted_cells::none) continue;
+      if(t >= records_.size()) {
+        records_.resize(t + 1);
+        cells_.resize(t + 1, std::array<Vertex_id, 4>{{ghost_vertex, ghost_vertex, ghost_vertex, ghost_vertex}});
+      }
+      records_[t] = std::move(records[s]);
+      std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, cells_[t].begin());
+    }
   }
 
   void clear()
@@ -312,6 +330,7 @@ class User_cells<void>
 {
 public:
   void rename(const Flat_storage&, Tet_id, const Vertex_id*) {}
+  void lift(const Flat_storage&, const Lifted_cells&) {}
   void clear() {}
 };
 
