@@ -26,12 +26,12 @@
 //
 // Slots above the dimension (above 0 in dimension -1) hold `no_vertex` and
 // a neighbour code pointing back at the cell itself (never followed: handles
-// answer null there).  The
-// infinite vertex may sit in any slot of a lower-dimensional cell, as in
-// CGAL, so Flat_storage::is_ghost (slot 3) is meaningless below dimension 3;
-// `ghost_tets` still counts the cells that have it.  Nothing here runs in
-// dimension 3: lifting to 3D drops the CGAL triangulation and rebuilds the
-// arrays from scratch (Triangulation_core::lift_to_dimension_3).
+// answer null there).  The infinite vertex may sit in any slot of a
+// lower-dimensional cell, as in CGAL, so Flat_storage::is_ghost (slot 3) is
+// meaningless below dimension 3; `ghost_tets` still counts the cells that
+// have it.  Nothing here runs in dimension 3: lifting to 3D drops the CGAL
+// triangulation and rebuilds the arrays from scratch
+// (Triangulation_core::lift_to_dimension_3).
 
 #ifndef CGAL_FDT3_INTERNAL_LOWER_DIMENSIONS_H
 #define CGAL_FDT3_INTERNAL_LOWER_DIMENSIONS_H
