@@ -671,8 +671,9 @@ public:
   // The cells and the faces met by the segment [p, q] (or [vs, vt]) in
   // order (see Segment_traverser.h); p may lie outside the hull.  In
   // dimension 2, CGAL's cell traverser on CGAL's triangulation beside the
-  // arrays answers, p and q in the plane of the points; the simplices need
-  // dimension 3 (CGAL 5.5's simplex traverser crashes in dimension 2).
+  // arrays answers, p and q in the plane of the points.  The rest needs
+  // dimension 3: in dimension 2 CGAL 5.5's simplex traverser dereferences a
+  // null cell, and its cell traverser from a vertex reads vertex(-1) (UBSan).
   Segment_cell_iterator segment_traverser_cells_begin(const Point& p, const Point& q,
                                                       Cell_handle hint = Cell_handle()) const
   {
@@ -683,9 +684,6 @@ public:
   }
   Segment_cell_iterator segment_traverser_cells_begin(Vertex_handle vs, Vertex_handle vt) const
   {
-    if(dimension() == 2)
-      return Segment_cell_iterator(
-          planar_segment_cells(lower().delaunay().segment_traverser_cells_begin(to_reference(vs), to_reference(vt))));
     return Segment_cell_iterator(segment_walk(vs, vt).cells);
   }
   Segment_cell_iterator segment_traverser_cells_end() const { return Segment_cell_iterator(); }

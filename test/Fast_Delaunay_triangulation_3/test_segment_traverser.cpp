@@ -12,8 +12,9 @@
 //     must appear among the simplices, in order.
 // Segments that start outside the hull follow CGAL's walk among the infinite
 // cells; the sources are chosen so that CGAL's located cell is the only
-// candidate.  In dimension 2 CGAL's own cell traverser answers on both sides
-// (its simplex traverser crashes there).
+// candidate.  In dimension 2 CGAL's own cell traverser answers on both sides,
+// between points (its simplex traverser and its walk from a vertex are
+// broken there).
 // CGAL 5.5 is not the oracle for degenerate segments: its sequence through
 // vertices and along edges changes with the insertion order of the same points,
 // and it lists faces that the segment does not meet (a cell between an edge
@@ -404,13 +405,10 @@ TEST(SegmentTraverser, SegmentsFromOutsideTheHull)
   }
 }
 
-// Dimension 2: the cells of CGAL's traverser, between points of the plane
-// and between vertices.  Sources outside the hull start from the infinite
-// triangle that CGAL's locate picks among those that see them, and a walk
-// from a vertex starts from CGAL's v->cell(), may list triangles around it
-// that the segment does not cross and may not end at a triangle of the target
-// vertex: both depend on the triangulation's storage, so those walks are
-// counted, not compared.
+// Dimension 2: the cells of CGAL's traverser between points of the plane.
+// Sources outside the hull start from the infinite triangle that CGAL's
+// locate picks among those that see them, which depends on the
+// triangulation's storage: those walks are counted, not compared.
 TEST(SegmentTraverser, DimensionTwo)
 {
   CGAL::Random random(14);
@@ -442,23 +440,6 @@ TEST(SegmentTraverser, DimensionTwo)
   std::cout << "dimension 2, from outside the hull: cells of " << same_outside << " out of " << outside
             << " as CGAL 5.5 lists them\n";
   EXPECT_GE(compared, 40);
-  int same_from_vertices = 0;
-  for(int k = 0; k + 1 < 40; k += 2) {
-    Fast_dt::Vertex_handle fs, ft;
-    Cgal_dt::Vertex_handle cs, ct;
-    ASSERT_TRUE(fast.is_vertex(points[k], fs) && fast.is_vertex(points[k + 1], ft));
-    ASSERT_TRUE(cgal.is_vertex(points[k], cs) && cgal.is_vertex(points[k + 1], ct));
-    std::vector<std::string> ours, theirs;
-    for(Fast_dt::Cell_handle c : fast.segment_traverser_cell_handles(fs, ft)) ours.push_back(cell_text(fast, c));
-    for(Cgal_dt::Cell_handle c : cgal.segment_traverser_cell_handles(cs, ct)) theirs.push_back(cell_text(cgal, c));
-    same_from_vertices += ours == theirs;
-    // Both start from a triangle of vs (CGAL 5.5's walk does not always end
-    // at a triangle of vt in dimension 2).
-    ASSERT_FALSE(ours.empty());
-    EXPECT_TRUE((*fast.segment_traverser_cells_begin(fs, ft)).has_vertex(fs));
-    EXPECT_TRUE((*cgal.segment_traverser_cells_begin(cs, ct)).has_vertex(cs));
-  }
-  std::cout << "dimension 2, vertex to vertex: cells of " << same_from_vertices << " out of 20 as CGAL 5.5 lists them\n";
 }
 
 } // namespace

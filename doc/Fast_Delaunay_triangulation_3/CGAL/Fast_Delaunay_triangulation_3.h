@@ -62,12 +62,12 @@ Default: `Default`.
   (`segment_traverser_cells_begin(p, q, hint)`, `segment_traverser_cells_end()`,
   `segment_traverser_cell_handles(p, q, hint)`, `segment_traverser_simplices_begin(p, q, hint)`,
   `segment_traverser_simplices_end()`, `segment_traverser_simplices(p, q, hint)`) and for two
-  vertices, in dimension 3 (the cells also in dimension 2); it gives CGAL's cells and simplices when the segment meets no
+  vertices, in dimension 3 (the cells between two points also in dimension 2); it gives CGAL's cells and simplices when the segment meets no
   vertex or edge (but its ends), and otherwise the faces the segment meets (CGAL 5.5's sequence
   there depends on its storage; the user manual says how it differs). A segment that starts
   outside the convex hull is walked as CGAL walks it, from the infinite cell of `locate(p)`
-  through infinite cells into the hull; in dimension 2 CGAL's cell traverser answers (CGAL 5.5's
-  simplex traverser crashes there, so the simplices need dimension 3).
+  through infinite cells into the hull; in dimension 2 CGAL's cell traverser between two points
+  answers (CGAL 5.5's simplex traverser and its walk from a vertex are broken there).
 - Point location, the conflict zone, the incident / adjacent queries and
   the circulators, the Voronoi duals and `is_Gabriel()` are provided in
   dimension 3 (the manual lists them); stream operators read and write
