@@ -20,6 +20,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Segment_traverser.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Simplex.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Storage_anchor.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_io.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/User_bases.h>
@@ -45,6 +46,7 @@
 #include <cstdint>
 #include <iostream>
 #include <iterator>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -156,24 +158,30 @@ public:
   typedef std::pair<Cell_handle, int> Facet;
   typedef CGAL::Triple<Cell_handle, int, int> Edge;
 
+  // Internal: what handles point at (Storage_anchor.h), and the records of
+  // user bases it keeps (void for CGAL's own bases).
+  typedef Fast_Delaunay_triangulation_3_internal::Storage_anchor<Self> Anchor;
+  typedef typename std::conditional<has_user_vertex_base, Vertex, void>::type User_vertex_record;
+  typedef typename std::conditional<has_user_cell_base, Cell, void>::type User_cell_record;
+
   enum Locate_type { VERTEX = 0, EDGE, FACET, CELL, OUTSIDE_CONVEX_HULL, OUTSIDE_AFFINE_HULL };
 
 private:
   // Filters of the index iterators.
   struct Accept_live_cell
   {
-    bool operator()(const Self& t, Tet_id id) const { return t.core_.mesh.is_live(id); }
+    bool operator()(const Anchor& a, Tet_id id) const { return a.core.mesh.is_live(id); }
   };
   struct Accept_finite_cell
   {
-    bool operator()(const Self& t, Tet_id id) const
+    bool operator()(const Anchor& a, Tet_id id) const
     {
-      return t.core_.mesh.is_live(id) && !t.core_.mesh.is_ghost(id);
+      return a.core.mesh.is_live(id) && !a.core.mesh.is_ghost(id);
     }
   };
   struct Accept_any_vertex
   {
-    bool operator()(const Self&, Vertex_id) const { return true; }
+    bool operator()(const Anchor&, Vertex_id) const { return true; }
   };
 
 public:
@@ -196,7 +204,7 @@ public:
     typedef std::ptrdiff_t difference_type;
 
     All_vertices_iterator() = default;
-    All_vertices_iterator(const Self* tr, std::size_t position)
+    All_vertices_iterator(const Anchor* tr, std::size_t position)
         : position_(position), handle_(tr, id_at(position)) {}
     reference operator*() const { return *handle_; }
     pointer operator->() const { return handle_.operator->(); }
@@ -235,7 +243,7 @@ public:
     typedef const Facet& reference;
 
     Facet_iterator_t() = default;
-    Facet_iterator_t(const Self* tr, std::size_t code) : tr_(tr), code_(code) { skip(); }
+    Facet_iterator_t(const Anchor* tr, std::size_t code) : tr_(tr), code_(code) { skip(); }
     const Facet& operator*() const { return facet_; }
     const Facet* operator->() const { return &facet_; }
     Facet_iterator_t& operator++() { ++code_; skip(); return *this; }
@@ -247,7 +255,7 @@ public:
     // In dimension 2 the facets are the triangles, as (c, 3).
     void skip()
     {
-      const Flat_storage& m = tr_->core_.mesh;
+      const Flat_storage& m = tr_->core.mesh;
       const std::size_t end = 4 * tr_->slots_of_faces(2);
       const bool planar = tr_->dimension() == 2;
       for(; code_ < end; ++code_) {
@@ -264,7 +272,7 @@ public:
       }
       if(code_ < end) facet_ = Facet(Cell_handle(tr_, code_ >> 2), static_cast<int>(code_ & 3));
     }
-    const Self* tr_ = nullptr;
+    const Anchor* tr_ = nullptr;
     std::size_t code_ = 0;
     Facet facet_;
   };
@@ -283,7 +291,7 @@ public:
     typedef const Edge& reference;
 
     Edge_iterator_t() = default;
-    Edge_iterator_t(const Self* tr, std::size_t code) : tr_(tr), code_(code) { skip(); }
+    Edge_iterator_t(const Anchor* tr, std::size_t code) : tr_(tr), code_(code) { skip(); }
     const Edge& operator*() const { return edge_; }
     const Edge* operator->() const { return &edge_; }
     Edge_iterator_t& operator++() { ++code_; skip(); return *this; }
@@ -296,7 +304,7 @@ public:
     // each triangle reports the edges whose other triangle has a larger index.
     void skip()
     {
-      const Flat_storage& m = tr_->core_.mesh;
+      const Flat_storage& m = tr_->core.mesh;
       const std::size_t end = 6 * tr_->slots_of_faces(1);
       const int dimension = tr_->dimension();
       for(; code_ < end; ++code_) {
@@ -313,7 +321,7 @@ public:
       if(code_ < end)
         edge_ = Edge(Cell_handle(tr_, code_ / 6), edge_vertex[code_ % 6][0], edge_vertex[code_ % 6][1]);
     }
-    const Self* tr_ = nullptr;
+    const Anchor* tr_ = nullptr;
     std::size_t code_ = 0;
     Edge edge_;
   };
@@ -357,24 +365,24 @@ public:
   // ---------------------------------------------------------------- creation
   explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits(),
                                          Lock_data_structure* lock_ds = nullptr)
-      : traits_(gt), lock_ds_(lock_ds)
+      : anchor_(new Anchor(gt)), lock_ds_(lock_ds)
   {}
   explicit Fast_Delaunay_triangulation_3(Lock_data_structure* lock_ds, const Geom_traits& gt = Geom_traits())
-      : traits_(gt), lock_ds_(lock_ds)
+      : anchor_(new Anchor(gt)), lock_ds_(lock_ds)
   {}
 
   template <class InputIterator>
   Fast_Delaunay_triangulation_3(InputIterator first, InputIterator last,
                                 const Geom_traits& gt = Geom_traits(),
                                 Lock_data_structure* lock_ds = nullptr)
-      : traits_(gt), lock_ds_(lock_ds)
+      : anchor_(new Anchor(gt)), lock_ds_(lock_ds)
   {
     insert(first, last);
   }
   template <class InputIterator>
   Fast_Delaunay_triangulation_3(InputIterator first, InputIterator last, Lock_data_structure* lock_ds,
                                 const Geom_traits& gt = Geom_traits())
-      : traits_(gt), lock_ds_(lock_ds)
+      : anchor_(new Anchor(gt)), lock_ds_(lock_ds)
   {
     insert(first, last);
   }
@@ -383,90 +391,57 @@ public:
   void set_lock_data_structure(Lock_data_structure* lock_ds) { lock_ds_ = lock_ds; }
   bool is_parallel() const { return std::is_same<Concurrency_tag, Parallel_tag>::value; }
 
+  // A copy has an anchor of its own: handles of `other` stay with `other`.
   Fast_Delaunay_triangulation_3(const Self& other)
-      : traits_(other.traits_), core_(other.core_), lock_ds_(other.lock_ds_), threads_(other.threads_),
-        vertex_infos_(other.vertex_infos_), cell_infos_(other.cell_infos_),
-        user_vertices_(other.user_vertices_), user_cells_(other.user_cells_)
-  {
-    user_vertices_.attach(this);
-  }
+      : anchor_(new Anchor(*other.anchor_)), lock_ds_(other.lock_ds_), threads_(other.threads_)
+  {}
+  // The data and its anchor change hands, so handles of `other` designate
+  // the same vertices and cells, now in *this; `other` is left empty and
+  // valid, with an anchor of its own (an allocation: a bad_alloc there
+  // terminates).
   Fast_Delaunay_triangulation_3(Self&& other) noexcept
-      : traits_(std::move(other.traits_)), core_(std::move(other.core_)), lock_ds_(other.lock_ds_),
-        threads_(other.threads_), vertex_infos_(std::move(other.vertex_infos_)),
-        cell_infos_(std::move(other.cell_infos_)), user_vertices_(std::move(other.user_vertices_)),
-        user_cells_(std::move(other.user_cells_))
+      : anchor_(std::move(other.anchor_)), lock_ds_(other.lock_ds_), threads_(other.threads_)
   {
-    user_vertices_.attach(this);
-    other.clear();
+    other.anchor_.reset(new Anchor(anchor_->traits));
   }
   Self& operator=(const Self& other)
   {
     if(this != &other) {
-      traits_ = other.traits_;
-      core_ = other.core_;
+      anchor_.reset(new Anchor(*other.anchor_));
       lock_ds_ = other.lock_ds_;
       threads_ = other.threads_;
-      vertex_infos_ = other.vertex_infos_;
-      cell_infos_ = other.cell_infos_;
-      user_vertices_ = other.user_vertices_;
-      user_cells_ = other.user_cells_;
-      user_vertices_.attach(this);
-      incident_cells_.clear();
     }
     return *this;
   }
   Self& operator=(Self&& other) noexcept
   {
     if(this != &other) {
-      traits_ = std::move(other.traits_);
-      core_ = std::move(other.core_);
+      anchor_ = std::move(other.anchor_);
       lock_ds_ = other.lock_ds_;
       threads_ = other.threads_;
-      vertex_infos_ = std::move(other.vertex_infos_);
-      cell_infos_ = std::move(other.cell_infos_);
-      user_vertices_ = std::move(other.user_vertices_);
-      user_cells_ = std::move(other.user_cells_);
-      user_vertices_.attach(this);
-      incident_cells_.clear();
-      other.clear();
+      other.anchor_.reset(new Anchor(anchor_->traits));
     }
     return *this;
   }
-  void swap(Self& other)
+  // Handles and iterators follow the data, as CGAL's do.
+  void swap(Self& other) noexcept
   {
-    std::swap(traits_, other.traits_);
-    std::swap(core_, other.core_);
+    std::swap(anchor_, other.anchor_);
     std::swap(lock_ds_, other.lock_ds_);
     std::swap(threads_, other.threads_);
-    std::swap(vertex_infos_, other.vertex_infos_);
-    std::swap(cell_infos_, other.cell_infos_);
-    std::swap(user_vertices_, other.user_vertices_);
-    std::swap(user_cells_, other.user_cells_);
-    user_vertices_.attach(this);
-    other.user_vertices_.attach(&other);
-    incident_cells_.clear();
-    other.incident_cells_.clear();
   }
-  void clear()
-  {
-    core_.clear();
-    vertex_infos_.clear();
-    cell_infos_.clear();
-    user_vertices_.clear();
-    user_cells_.clear();
-    incident_cells_.clear();
-  }
+  void clear() { anchor_->clear(); }
 
   // ---------------------------------------------------------------- options
   // Seed of the insertion order (the triangulation itself does not depend on it).
-  void set_seed(std::uint64_t seed) { core_.seed = seed; }
+  void set_seed(std::uint64_t seed) { anchor_->core.seed = seed; }
   // Per-phase timings of insertions (sort, walk, cavity, ball), see last_insertion_report().
-  void set_phase_timing(bool on) { core_.timed = on; }
-  const Insertion_report& last_insertion_report() const { return core_.last_report; }
+  void set_phase_timing(bool on) { anchor_->core.timed = on; }
+  const Insertion_report& last_insertion_report() const { return anchor_->core.last_report; }
   // Cache the in-sphere sub-determinants of the paper's §2.4 (32 more bytes
   // per cell); off by default, see Sub_determinants.h for the measurement.
-  void set_sub_determinants(bool on) { core_.set_sub_determinants(on); }
-  bool sub_determinants() const { return core_.sub_determinants(); }
+  void set_sub_determinants(bool on) { anchor_->core.set_sub_determinants(on); }
+  bool sub_determinants() const { return anchor_->core.sub_determinants(); }
   // Number of Moore partitions inserted concurrently by the parallel engine
   // (paper §3); 1 is the sequential kernel.  The threads that run them are
   // those of the caller's TBB arena, so tbb::global_control and
@@ -502,7 +477,7 @@ public:
       Fast_Delaunay_triangulation_3_internal::read_points_and_infos(first, last, xyz, infos);
       std::vector<Vertex_id> vertex_of_input;
       const std::ptrdiff_t added = insert_coordinates(xyz, &vertex_of_input);
-      vertex_infos_.assign(vertex_of_input, infos);
+      anchor_->vertex_infos.assign(vertex_of_input, infos);
       return added;
     }
   }
@@ -511,11 +486,11 @@ public:
   {
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
-    incident_cells_.clear();
-    core_.partitions = 1; // one point: no partitioned round to run
-    const Vertex_id v = core_.insert_one(xyz);
+    anchor_->incident_cells.clear();
+    anchor_->core.partitions = 1; // one point: no partitioned round to run
+    const Vertex_id v = anchor_->core.insert_one(xyz);
     vertices_added();
-    return Vertex_handle(this, v);
+    return Vertex_handle(anchor_.get(), v);
   }
   // CGAL's insert(p, hint): in dimension 3 the kernel's walk starts at the
   // hint (a cell, or a cell of the vertex); below, CGAL's locate starts
@@ -607,13 +582,13 @@ public:
       hole.push_back(c.index());
     }
     if(dimension() == 2) {
-      const Vertex_id v = core_.insert_in_hole_below_dimension_3(xyz, hole, begin.index(), i, ball);
+      const Vertex_id v = anchor_->core.insert_in_hole_below_dimension_3(xyz, hole, begin.index(), i, ball);
       vertices_added();
-      return Vertex_handle(this, v);
+      return Vertex_handle(anchor_.get(), v);
     }
-    const Vertex_id v = core_.insert_in_hole(xyz, hole.data(), hole.size(), ball);
+    const Vertex_id v = anchor_->core.insert_in_hole(xyz, hole.data(), hole.size(), ball);
     after_single_insertion(ball);
-    return Vertex_handle(this, v);
+    return Vertex_handle(anchor_.get(), v);
   }
 
   // ---------------------------------------------------------------- conflict zone (dimensions 3 and 2)
@@ -645,9 +620,9 @@ public:
     const double q[3] = {p.x(), p.y(), p.z()};
     Fast_Delaunay_triangulation_3_internal::Conflict_zone zone;
     Fast_Delaunay_triangulation_3_internal::find_conflict_zone(
-        core_.mesh, c.index(), q, !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value, zone);
+        anchor_->core.mesh, c.index(), q, !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value, zone);
     for(auto code : zone.boundary) *bfit++ = facet_of_code(code);
-    for(Tet_id t : zone.cells) *cit++ = Cell_handle(this, t);
+    for(Tet_id t : zone.cells) *cit++ = Cell_handle(anchor_.get(), t);
     for(auto code : zone.internal) *ifit++ = facet_of_code(code);
     return make_triple(bfit, cit, ifit);
   }
@@ -692,12 +667,19 @@ public:
     return vertices_on_conflict_zone_boundary(p, c, res);
   }
 
-  // ---------------------------------------------------------------- segment traverser (dimension 3)
+  // ---------------------------------------------------------------- segment traverser (dimensions 3 and 2)
   // The cells and the faces met by the segment [p, q] (or [vs, vt]) in
-  // order, p in the convex hull (see Segment_traverser.h).
+  // order (see Segment_traverser.h); p may lie outside the hull.  In
+  // dimension 2, CGAL's cell traverser on CGAL's triangulation beside the
+  // arrays answers, p and q in the plane of the points.  The rest needs
+  // dimension 3: in dimension 2 CGAL 5.5's simplex traverser dereferences a
+  // null cell, and its cell traverser from a vertex reads vertex(-1) (UBSan).
   Segment_cell_iterator segment_traverser_cells_begin(const Point& p, const Point& q,
                                                       Cell_handle hint = Cell_handle()) const
   {
+    if(dimension() == 2)
+      return Segment_cell_iterator(planar_segment_cells(
+          lower().delaunay().segment_traverser_cells_begin(to_reference(p), to_reference(q), to_reference(hint))));
     return Segment_cell_iterator(segment_walk(p, q, hint).cells);
   }
   Segment_cell_iterator segment_traverser_cells_begin(Vertex_handle vs, Vertex_handle vt) const
@@ -736,24 +718,24 @@ public:
   }
 
   // ---------------------------------------------------------------- access
-  const Geom_traits& geom_traits() const { return traits_; }
-  int dimension() const { return core_.dimension; }
-  size_type number_of_vertices() const { return core_.number_of_vertices(); }
+  const Geom_traits& geom_traits() const { return anchor_->traits; }
+  int dimension() const { return anchor_->core.dimension; }
+  size_type number_of_vertices() const { return anchor_->core.number_of_vertices(); }
   // Cells, finite and infinite; 0 in dimension < 3, as in CGAL (the triangles
   // of dimension 2 are facets, the segments of dimension 1 edges).
-  size_type number_of_cells() const { return dimension() < 3 ? 0 : core_.mesh.live_tets; }
+  size_type number_of_cells() const { return dimension() < 3 ? 0 : anchor_->core.mesh.live_tets; }
   size_type number_of_finite_cells() const
   {
-    return dimension() < 3 ? 0 : core_.mesh.live_tets - core_.mesh.ghost_tets;
+    return dimension() < 3 ? 0 : anchor_->core.mesh.live_tets - anchor_->core.mesh.ghost_tets;
   }
   size_type number_of_facets() const
   {
-    return dimension() == 3 ? 2 * number_of_cells() : dimension() == 2 ? core_.mesh.live_tets : 0;
+    return dimension() == 3 ? 2 * number_of_cells() : dimension() == 2 ? anchor_->core.mesh.live_tets : 0;
   }
   size_type number_of_finite_facets() const
   {
-    if(dimension() == 2) return core_.mesh.live_tets - core_.mesh.ghost_tets;
-    return dimension() < 3 ? 0 : (4 * number_of_finite_cells() + core_.mesh.ghost_tets) / 2;
+    if(dimension() == 2) return anchor_->core.mesh.live_tets - anchor_->core.mesh.ghost_tets;
+    return dimension() < 3 ? 0 : (4 * number_of_finite_cells() + anchor_->core.mesh.ghost_tets) / 2;
   }
   // Dimension 3: Euler's relation on the triangulated ball, V - E + F - T = 1.
   // Dimension 2: each triangle has 3 edges, each edge 2 triangles, and one
@@ -763,8 +745,8 @@ public:
   {
     switch(dimension()) {
       case 3: return number_of_vertices() + number_of_finite_facets() - number_of_finite_cells() - 1;
-      case 2: return 3 * core_.mesh.live_tets / 2 - core_.mesh.ghost_tets;
-      case 1: return core_.mesh.live_tets - 2;
+      case 2: return 3 * anchor_->core.mesh.live_tets / 2 - anchor_->core.mesh.ghost_tets;
+      case 1: return anchor_->core.mesh.live_tets - 2;
       default: return 0;
     }
   }
@@ -773,34 +755,27 @@ public:
   size_type number_of_edges() const
   {
     switch(dimension()) {
-      case 3: return number_of_finite_edges() + core_.mesh.ghost_tets / 2 + 2;
-      case 2: return 3 * core_.mesh.live_tets / 2;
-      case 1: return core_.mesh.live_tets;
+      case 3: return number_of_finite_edges() + anchor_->core.mesh.ghost_tets / 2 + 2;
+      case 2: return 3 * anchor_->core.mesh.live_tets / 2;
+      case 1: return anchor_->core.mesh.live_tets;
       default: return 0;
     }
   }
 
   Vertex_handle infinite_vertex() const
   {
-    return Vertex_handle(this, Fast_Delaunay_triangulation_3_internal::ghost_vertex);
+    return Vertex_handle(anchor_.get(), Fast_Delaunay_triangulation_3_internal::ghost_vertex);
   }
   // Below dimension 3, a triangle, segment or point cell that has the infinite
-  // vertex (null in dimension -1).
-  Cell_handle infinite_cell() const
-  {
-    if(dimension() < 3) return incident_cell_of(Fast_Delaunay_triangulation_3_internal::ghost_vertex);
-    const Flat_storage& m = core_.mesh;
-    for(Tet_id t = 0; t < m.number_of_slots(); ++t)
-      if(m.is_live(t) && m.is_ghost(t)) return Cell_handle(this, t);
-    return Cell_handle();
-  }
+  // vertex; in dimension -1 the cell that holds only the infinite vertex.
+  Cell_handle infinite_cell() const { return anchor_->infinite_cell(); }
 
   bool is_infinite(Vertex_handle v) const { return v.index() == Fast_Delaunay_triangulation_3_internal::ghost_vertex; }
   // Also below dimension 3 (where CGAL requires dimension 3): whether c has
   // the infinite vertex.
   bool is_infinite(Cell_handle c) const
   {
-    return dimension() == 3 ? core_.mesh.is_ghost(c.index()) : has_infinite_vertex(c.index());
+    return dimension() == 3 ? anchor_->core.mesh.is_ghost(c.index()) : has_infinite_vertex(c.index());
   }
   // Dimension 2: facet (c, 3) is the triangle c.
   bool is_infinite(Cell_handle c, int i) const
@@ -818,7 +793,7 @@ public:
 
   int mirror_index(Cell_handle c, int i) const
   {
-    return Fast_Delaunay_triangulation_3_internal::facet_of(core_.mesh.neighbor_code(c.index(), i));
+    return Fast_Delaunay_triangulation_3_internal::facet_of(anchor_->core.mesh.neighbor_code(c.index(), i));
   }
   Vertex_handle mirror_vertex(Cell_handle c, int i) const
   {
@@ -869,11 +844,11 @@ public:
     }
     const double q[3] = {p.x(), p.y(), p.z()};
     const Fast_Delaunay_triangulation_3_internal::Location loc =
-        Fast_Delaunay_triangulation_3_internal::locate(core_.mesh, start ? start.index() : Tet_id(-1), q);
+        Fast_Delaunay_triangulation_3_internal::locate(anchor_->core.mesh, start ? start.index() : Tet_id(-1), q);
     lt = static_cast<Locate_type>(loc.type);
     if(loc.li >= 0) li = loc.li;
     if(loc.lj >= 0) lj = loc.lj;
-    return Cell_handle(this, loc.cell);
+    return Cell_handle(anchor_.get(), loc.cell);
   }
   Cell_handle locate(const Point& p, Cell_handle start = Cell_handle(), bool* could_lock_zone = nullptr) const
   {
@@ -906,7 +881,7 @@ public:
     CGAL_precondition(dimension() == 3);
     Fast_Delaunay_triangulation_3_internal::Location_type type;
     const Bounded_side side =
-        Fast_Delaunay_triangulation_3_internal::side_of_cell(traits_, core_.mesh, c.index(), p, type, i, j);
+        Fast_Delaunay_triangulation_3_internal::side_of_cell(anchor_->traits, anchor_->core.mesh, c.index(), p, type, i, j);
     lt = static_cast<Locate_type>(type);
     return side;
   }
@@ -943,7 +918,7 @@ public:
     CGAL_precondition(dimension() == 3);
     const double q[3] = {p.x(), p.y(), p.z()};
     return static_cast<Bounded_side>(
-        Fast_Delaunay_triangulation_3_internal::side_of_sphere(core_.mesh, c.index(), q, perturb));
+        Fast_Delaunay_triangulation_3_internal::side_of_sphere(anchor_->core.mesh, c.index(), q, perturb));
   }
   Vertex_handle nearest_vertex(const Point& p, Cell_handle start = Cell_handle()) const
   {
@@ -960,12 +935,12 @@ public:
   }
   bool is_vertex(Vertex_handle v) const
   {
-    return v.owner() == this && (is_infinite(v) || v.index() < number_of_vertices());
+    return v.owner() == anchor_.get() && (is_infinite(v) || v.index() < number_of_vertices());
   }
   bool is_cell(Cell_handle c) const
   {
-    return dimension() == 3 && c.owner() == this && c.index() < core_.mesh.number_of_slots() &&
-           core_.mesh.is_live(c.index());
+    return dimension() == 3 && c.owner() == anchor_.get() && c.index() < anchor_->core.mesh.number_of_slots() &&
+           anchor_->core.mesh.is_live(c.index());
   }
   // Below dimension 3 CGAL's triangulation answers (CGAL 5.5 looks among
   // the cells around u, and finds none below dimension 2: is_edge() is
@@ -1025,7 +1000,7 @@ public:
   Point dual(Cell_handle c) const
   {
     CGAL_precondition(dimension() == 3 && !is_infinite(c));
-    return traits_.construct_circumcenter_3_object()(point(c, 0), point(c, 1), point(c, 2), point(c, 3));
+    return anchor_->circumcenter(c.index());
   }
   Object dual(const Facet& f) const { return dual(f.first, f.second); }
   // The Voronoi edge of a finite facet: the segment between the duals of its
@@ -1037,7 +1012,7 @@ public:
     CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
     const Cell_handle n = c->neighbor(i);
     if(!is_infinite(c) && !is_infinite(n))
-      return traits_.construct_object_3_object()(traits_.construct_segment_3_object()(dual(c), dual(n)));
+      return anchor_->traits.construct_object_3_object()(anchor_->traits.construct_segment_3_object()(dual(c), dual(n)));
     const Cell_handle finite = is_infinite(c) ? n : c;
     const int in = is_infinite(c) ? mirror_index(c, i) : i;
     // The facet's vertices ordered so that its equidistant line leaves the
@@ -1046,14 +1021,14 @@ public:
     int k[3] = {(in + 1) & 3, (in + 2) & 3, (in + 3) & 3};
     if(in & 1) std::swap(k[0], k[1]);
     const Line l =
-        traits_.construct_equidistant_line_3_object()(point(finite, k[0]), point(finite, k[1]), point(finite, k[2]));
-    return traits_.construct_object_3_object()(traits_.construct_ray_3_object()(dual(finite), l));
+        anchor_->traits.construct_equidistant_line_3_object()(point(finite, k[0]), point(finite, k[1]), point(finite, k[2]));
+    return anchor_->traits.construct_object_3_object()(anchor_->traits.construct_ray_3_object()(dual(finite), l));
   }
   // The line that supports dual(c, i), through facet i's vertices in c's order.
   Line dual_support(Cell_handle c, int i) const
   {
     CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
-    return traits_.construct_equidistant_line_3_object()(point(c, (i + 1) & 3), point(c, (i + 2) & 3),
+    return anchor_->traits.construct_equidistant_line_3_object()(point(c, (i + 1) & 3), point(c, (i + 2) & 3),
                                                          point(c, (i + 3) & 3));
   }
 
@@ -1064,7 +1039,7 @@ public:
   bool is_Gabriel(Cell_handle c, int i) const
   {
     CGAL_precondition(dimension() == 3 && !is_infinite(c, i));
-    const auto side = traits_.side_of_bounded_sphere_3_object();
+    const auto side = anchor_->traits.side_of_bounded_sphere_3_object();
     const Point a = point(c, (i + 1) & 3), b = point(c, (i + 2) & 3), d = point(c, (i + 3) & 3);
     for(const Vertex_handle v : {c->vertex(i), mirror_vertex(c, i)})
       if(!is_infinite(v) && side(a, b, d, v->point()) == ON_BOUNDED_SIDE) return false;
@@ -1074,7 +1049,7 @@ public:
   bool is_Gabriel(Cell_handle c, int i, int j) const
   {
     CGAL_precondition(dimension() == 3 && !is_infinite(c, i, j));
-    const auto side = traits_.side_of_bounded_sphere_3_object();
+    const auto side = anchor_->traits.side_of_bounded_sphere_3_object();
     const Vertex_handle u = c->vertex(i), v = c->vertex(j);
     const Point a = u->point(), b = v->point();
     Cell_circulator cells = incident_cells(c, i, j), done = cells;
@@ -1109,8 +1084,8 @@ public:
     if(!is_infinite(c) || i == 3) {
       const int i0 = i > 0 ? 0 : 1, i1 = i > 1 ? 1 : 2, i2 = i > 2 ? 2 : 3;
       const Point &a = point(c, i0), &b = point(c, i1), &d = point(c, i2);
-      CGAL_precondition(traits_.coplanar_3_object()(a, b, d, p));
-      if(!perturb) return traits_.coplanar_side_of_bounded_circle_3_object()(a, b, d, p);
+      CGAL_precondition(anchor_->traits.coplanar_3_object()(a, b, d, p));
+      if(!perturb) return anchor_->traits.coplanar_side_of_bounded_circle_3_object()(a, b, d, p);
       const double pa[3] = {a.x(), a.y(), a.z()}, pb[3] = {b.x(), b.y(), b.z()}, pd[3] = {d.x(), d.y(), d.z()},
                    q[3] = {p.x(), p.y(), p.z()};
       return static_cast<Bounded_side>(
@@ -1118,11 +1093,11 @@ public:
     }
     // Facet i of a ghost cell: the infinite vertex (slot 3) and the edge (v1, v2).
     const Point v1 = point(c, next_around_edge(3, i)), v2 = point(c, next_around_edge(i, 3));
-    const auto coplanar_orientation = traits_.coplanar_orientation_3_object();
+    const auto coplanar_orientation = anchor_->traits.coplanar_orientation_3_object();
     const int o = static_cast<int>(coplanar_orientation(v1, v2, point(c, i))) *
                   static_cast<int>(coplanar_orientation(v1, v2, p));
     if(o != 0) return static_cast<Bounded_side>(-o);
-    if(traits_.collinear_are_strictly_ordered_along_line_3_object()(v1, p, v2)) return ON_BOUNDED_SIDE;
+    if(anchor_->traits.collinear_are_strictly_ordered_along_line_3_object()(v1, p, v2)) return ON_BOUNDED_SIDE;
     return p == v1 || p == v2 ? ON_BOUNDARY : ON_UNBOUNDED_SIDE;
   }
 
@@ -1131,7 +1106,7 @@ public:
   Bounded_side side_of_tetrahedron(const Point& p, const Point& p0, const Point& p1, const Point& p2,
                                    const Point& p3, Locate_type& lt, int& i, int& j) const
   {
-    const auto orientation = traits_.orientation_3_object();
+    const auto orientation = anchor_->traits.orientation_3_object();
     CGAL_precondition(orientation(p0, p1, p2, p3) == POSITIVE);
     const Orientation o[4] = {orientation(p, p1, p2, p3), orientation(p0, p, p2, p3), orientation(p0, p1, p, p3),
                               orientation(p0, p1, p2, p)};
@@ -1229,7 +1204,7 @@ public:
   Cell_circulator incident_cells(Cell_handle c, int i, int j, Cell_handle start) const
   {
     CGAL_precondition(dimension() == 3 && start->has_vertex(c->vertex(i)) && start->has_vertex(c->vertex(j)));
-    return Cell_circulator(this, c->vertex(i).index(), c->vertex(j).index(), start.index());
+    return Cell_circulator(anchor_.get(), c->vertex(i).index(), c->vertex(j).index(), start.index());
   }
   Cell_circulator incident_cells(const Edge& e, Cell_handle start) const
   {
@@ -1238,7 +1213,7 @@ public:
   Facet_circulator incident_facets(Cell_handle c, int i, int j) const
   {
     CGAL_precondition(dimension() == 3);
-    return Facet_circulator(this, c->vertex(i).index(), c->vertex(j).index(), c.index());
+    return Facet_circulator(anchor_.get(), c->vertex(i).index(), c->vertex(j).index(), c.index());
   }
   Facet_circulator incident_facets(const Edge& e) const { return incident_facets(e.first, e.second, e.third); }
   // Starting at facet f of start: from start if f is the facet that follows
@@ -1248,7 +1223,7 @@ public:
     CGAL_precondition(dimension() == 3);
     const int si = start->index(c->vertex(i)), sj = start->index(c->vertex(j));
     const Cell_handle from = f == next_around_edge(si, sj) ? start : start->neighbor(f);
-    return Facet_circulator(this, c->vertex(i).index(), c->vertex(j).index(), from.index());
+    return Facet_circulator(anchor_.get(), c->vertex(i).index(), c->vertex(j).index(), from.index());
   }
   Facet_circulator incident_facets(const Edge& e, Cell_handle start, int f) const
   {
@@ -1264,40 +1239,40 @@ public:
   }
 
   // ---------------------------------------------------------------- iterators
-  All_cells_iterator all_cells_begin() const { return All_cells_iterator(this, 0, cell_slots()); }
-  All_cells_iterator all_cells_end() const { return All_cells_iterator(this, cell_slots(), cell_slots()); }
+  All_cells_iterator all_cells_begin() const { return All_cells_iterator(anchor_.get(), 0, cell_slots()); }
+  All_cells_iterator all_cells_end() const { return All_cells_iterator(anchor_.get(), cell_slots(), cell_slots()); }
   All_cells_iterator cells_begin() const { return all_cells_begin(); }
   All_cells_iterator cells_end() const { return all_cells_end(); }
-  Finite_cells_iterator finite_cells_begin() const { return Finite_cells_iterator(this, 0, cell_slots()); }
-  Finite_cells_iterator finite_cells_end() const { return Finite_cells_iterator(this, cell_slots(), cell_slots()); }
+  Finite_cells_iterator finite_cells_begin() const { return Finite_cells_iterator(anchor_.get(), 0, cell_slots()); }
+  Finite_cells_iterator finite_cells_end() const { return Finite_cells_iterator(anchor_.get(), cell_slots(), cell_slots()); }
 
-  All_vertices_iterator all_vertices_begin() const { return All_vertices_iterator(this, 0); }
+  All_vertices_iterator all_vertices_begin() const { return All_vertices_iterator(anchor_.get(), 0); }
   // The infinite vertex exists even in the empty triangulation, as in CGAL.
-  All_vertices_iterator all_vertices_end() const { return All_vertices_iterator(this, number_of_vertices() + 1); }
+  All_vertices_iterator all_vertices_end() const { return All_vertices_iterator(anchor_.get(), number_of_vertices() + 1); }
   All_vertices_iterator vertices_begin() const { return all_vertices_begin(); }
   All_vertices_iterator vertices_end() const { return all_vertices_end(); }
   Finite_vertices_iterator finite_vertices_begin() const
   {
-    return Finite_vertices_iterator(this, 0, vertex_count());
+    return Finite_vertices_iterator(anchor_.get(), 0, vertex_count());
   }
   Finite_vertices_iterator finite_vertices_end() const
   {
-    return Finite_vertices_iterator(this, vertex_count(), vertex_count());
+    return Finite_vertices_iterator(anchor_.get(), vertex_count(), vertex_count());
   }
 
-  All_facets_iterator all_facets_begin() const { return All_facets_iterator(this, 0); }
-  All_facets_iterator all_facets_end() const { return All_facets_iterator(this, 4 * slots_of_faces(2)); }
+  All_facets_iterator all_facets_begin() const { return All_facets_iterator(anchor_.get(), 0); }
+  All_facets_iterator all_facets_end() const { return All_facets_iterator(anchor_.get(), 4 * slots_of_faces(2)); }
   All_facets_iterator facets_begin() const { return all_facets_begin(); }
   All_facets_iterator facets_end() const { return all_facets_end(); }
-  Finite_facets_iterator finite_facets_begin() const { return Finite_facets_iterator(this, 0); }
-  Finite_facets_iterator finite_facets_end() const { return Finite_facets_iterator(this, 4 * slots_of_faces(2)); }
+  Finite_facets_iterator finite_facets_begin() const { return Finite_facets_iterator(anchor_.get(), 0); }
+  Finite_facets_iterator finite_facets_end() const { return Finite_facets_iterator(anchor_.get(), 4 * slots_of_faces(2)); }
 
-  All_edges_iterator all_edges_begin() const { return All_edges_iterator(this, 0); }
-  All_edges_iterator all_edges_end() const { return All_edges_iterator(this, 6 * slots_of_faces(1)); }
+  All_edges_iterator all_edges_begin() const { return All_edges_iterator(anchor_.get(), 0); }
+  All_edges_iterator all_edges_end() const { return All_edges_iterator(anchor_.get(), 6 * slots_of_faces(1)); }
   All_edges_iterator edges_begin() const { return all_edges_begin(); }
   All_edges_iterator edges_end() const { return all_edges_end(); }
-  Finite_edges_iterator finite_edges_begin() const { return Finite_edges_iterator(this, 0); }
-  Finite_edges_iterator finite_edges_end() const { return Finite_edges_iterator(this, 6 * slots_of_faces(1)); }
+  Finite_edges_iterator finite_edges_begin() const { return Finite_edges_iterator(anchor_.get(), 0); }
+  Finite_edges_iterator finite_edges_end() const { return Finite_edges_iterator(anchor_.get(), 6 * slots_of_faces(1)); }
 
   All_cells all_cells() const { return All_cells(all_cells_begin(), all_cells_end()); }
   Finite_cells finite_cells() const { return Finite_cells(finite_cells_begin(), finite_cells_end()); }
@@ -1334,7 +1309,7 @@ public:
   bool is_valid(bool verbose = false, int = 0) const
   {
     std::string why;
-    const bool ok = core_.is_valid(&why);
+    const bool ok = anchor_->core.is_valid(&why);
     if(!ok && verbose) std::cerr << "Fast_Delaunay_triangulation_3::is_valid: " << why << std::endl;
     return ok;
   }
@@ -1348,7 +1323,7 @@ public:
   {
     if(dimension() == 3) {
       Fast_Delaunay_triangulation_3_internal::write_triangulation_3(
-          os, core_.mesh, [this](Vertex_id v) { return point_of(v); });
+          os, anchor_->core.mesh, [this](Vertex_id v) { return point_of(v); });
       return;
     }
     // No cells are stored below dimension 3.  CGAL's triangulation of the
@@ -1376,81 +1351,24 @@ public:
       is.setstate(std::ios_base::failbit);
       return false;
     }
-    core_.assign(std::move(built), built_dimension);
-    incident_cells_.clear();
+    anchor_->core.assign(std::move(built), built_dimension);
+    anchor_->incident_cells.clear();
     // The file carries no infos: every vertex and cell starts with Info().
-    vertex_infos_.clear();
-    user_vertices_.clear();
+    anchor_->vertex_infos.clear();
+    anchor_->user_vertices.clear();
     vertices_added();
-    cell_infos_.clear();
-    user_cells_.clear();
+    anchor_->cell_infos.clear();
+    anchor_->user_cells.clear();
     return true;
   }
 
-  // ---------------------------------------------------------------- internals used by handles
-  const Flat_storage& flat_storage() const { return core_.mesh; }
-  Point point_of(Vertex_id v) const
-  {
-    if(v == Fast_Delaunay_triangulation_3_internal::ghost_vertex) return Point(0, 0, 0);
-    const double* p = core_.mesh.point(v);
-    return Point(p[0], p[1], p[2]);
-  }
-  // Only with infos (see Vertex_and_cell_infos.h).
-  template <class Info = Vertex_info>
-  Info& vertex_info(Vertex_id v) const { return vertex_infos_.at(v); }
-  template <class Info = Cell_info>
-  Info& cell_info(Tet_id c) const { return cell_infos_.at(core_.mesh, c); }
-  // Only with a user vertex or cell base (see User_bases.h); the tag says which.
-  template <class Record = Vertex>
-  Record& user_record(const Vertex*, Vertex_id v) const { return user_vertices_.at(v); }
-  template <class Record = Cell>
-  Record& user_record(const Cell*, Tet_id c) const { return user_cells_.at(this, core_.mesh, c); }
-  Cell_handle incident_cell_of(Vertex_id v) const
-  {
-    if(dimension() < 3) return from_reference(lower().vertex(v)->cell());
-    if(incident_cells_.empty()) build_incident_cells();
-    if(v == Fast_Delaunay_triangulation_3_internal::ghost_vertex) return infinite_cell();
-    return Cell_handle(this, incident_cells_[v]);
-  }
-  // Below dimension 3 the infinite vertex may be in any slot up to the dimension.
-  bool has_infinite_vertex(Tet_id t) const
-  {
-    const Fast_Delaunay_triangulation_3_internal::Vertex_id* v = core_.mesh.vertex_ids(t);
-    const int last = std::max(dimension(), 0);
-    return std::find(v, v + last + 1, Fast_Delaunay_triangulation_3_internal::ghost_vertex) != v + last + 1;
-  }
-  // Slots the iterators over faces of dimension `face_dimension` scan: none
-  // when the triangulation has no such faces.
-  std::size_t slots_of_faces(int face_dimension) const
-  {
-    return dimension() < face_dimension ? 0 : core_.mesh.number_of_slots();
-  }
-  // The cell of smallest index among those around edge (v_i, v_j) of t.
-  Tet_id smallest_cell_around_edge(Tet_id t, int i, int j) const
-  {
-    const Flat_storage& m = core_.mesh;
-    const Vertex_id a = m.vertex(t, i), b = m.vertex(t, j);
-    // Turning around the edge: leave each cell through the facet opposite the
-    // off-edge vertex that the previous cell did not share.
-    Vertex_id cross = m.vertex(t, (i != 0 && j != 0) ? 0 : (i != 1 && j != 1) ? 1 : 2);
-    Tet_id smallest = t, c = t;
-    for(;;) {
-      int cross_slot = -1;
-      Vertex_id other = cross;
-      for(int s = 0; s < 4; ++s) {
-        const Vertex_id v = m.vertex(c, s);
-        if(v == a || v == b) continue;
-        if(v == cross) cross_slot = s;
-        else other = v;
-      }
-      CGAL_assertion(cross_slot >= 0);
-      c = m.neighbor(c, cross_slot);
-      if(c == t) break;
-      smallest = std::min(smallest, c);
-      cross = other;
-    }
-    return smallest;
-  }
+  // ---------------------------------------------------------------- internals
+  const Anchor* storage_anchor() const { return anchor_.get(); }
+  const Flat_storage& flat_storage() const { return anchor_->core.mesh; }
+  Point point_of(Vertex_id v) const { return anchor_->point_of(v); }
+  Cell_handle incident_cell_of(Vertex_id v) const { return anchor_->incident_cell_of(v); }
+  bool has_infinite_vertex(Tet_id t) const { return anchor_->has_infinite_vertex(t); }
+  std::size_t slots_of_faces(int face_dimension) const { return anchor_->slots_of_faces(face_dimension); }
 
 private:
   int partitions_for_insertion() const
@@ -1476,9 +1394,9 @@ private:
     if(dimension() < 3) return insert_below_dimension_3(p, start, nullptr, Cell_handle(), 0, 0, ball);
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
-    const Vertex_id v = core_.insert_one_from(xyz, start ? start.index() : Tet_id(-1), ball);
+    const Vertex_id v = anchor_->core.insert_one_from(xyz, start ? start.index() : Tet_id(-1), ball);
     after_single_insertion(ball);
-    return Vertex_handle(this, v);
+    return Vertex_handle(anchor_.get(), v);
   }
   // Every vertex of a deleted cell is a vertex of the ball (a Delaunay
   // insertion removes no vertex), so pointing the vertices of the ball at it
@@ -1487,12 +1405,12 @@ private:
   void after_single_insertion(const std::vector<Tet_id>& ball)
   {
     vertices_added();
-    if(incident_cells_.empty()) return;
-    incident_cells_.resize(number_of_vertices());
+    if(anchor_->incident_cells.empty()) return;
+    anchor_->incident_cells.resize(number_of_vertices());
     for(Tet_id t : ball)
       for(int i = 0; i < 4; ++i) {
-        const Vertex_id w = core_.mesh.vertex(t, i);
-        if(w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[w] = t;
+        const Vertex_id w = anchor_->core.mesh.vertex(t, i);
+        if(w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) anchor_->incident_cells[w] = t;
       }
   }
   // As CGAL's insert(p, start) (lt null) or insert(p, *lt, c, li, lj); a
@@ -1504,8 +1422,8 @@ private:
   {
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
-    incident_cells_.clear();
-    core_.partitions = 1;
+    anchor_->incident_cells.clear();
+    anchor_->core.partitions = 1;
     typename Lower::Location where;
     if(lt) {
       where.type = static_cast<typename Lower::Locate_type>(*lt);
@@ -1513,29 +1431,24 @@ private:
       where.li = li;
       where.lj = lj;
     }
-    const Vertex_id v = core_.insert_one_below_dimension_3(xyz, start ? start.index() : Tet_id(-1),
+    const Vertex_id v = anchor_->core.insert_one_below_dimension_3(xyz, start ? start.index() : Tet_id(-1),
                                                            lt ? &where : nullptr, around);
     vertices_added();
-    return Vertex_handle(this, v);
+    return Vertex_handle(anchor_.get(), v);
   }
 
   // Handles of CGAL's triangulation below dimension 3 (Lower_dimensions.h)
-  // and ours, both ways.  A CGAL cell without a slot is the cell of the
-  // empty triangulation, which has no copy: a null handle.
-  const Lower& lower() const { return core_.lower; }
+  // and ours, both ways; every CGAL cell has its slot, the one cell of the
+  // empty triangulation included.
+  const Lower& lower() const { return anchor_->core.lower; }
   // CGAL's side_of_facet / side_of_edge leave lt alone outside the simplex:
   // a value no enumerator has (but in the enum's range, 0..7) tells, so
   // that ours leave the caller's lt alone too.
   static typename Lower::Locate_type unset_locate_type() { return static_cast<typename Lower::Locate_type>(7); }
-  Cell_handle from_reference(Reference_cell c) const
-  {
-    if(c == Reference_cell() || Lower::slot(c) == Fast_Delaunay_triangulation_3_internal::lower_dimensions_detail::Slot::none)
-      return Cell_handle();
-    return Cell_handle(this, Lower::slot(c));
-  }
+  Cell_handle from_reference(Reference_cell c) const { return anchor_->cell_of_reference(c); }
   Vertex_handle from_reference(Reference_vertex v) const
   {
-    return v == Reference_vertex() ? Vertex_handle() : Vertex_handle(this, Lower::id(v));
+    return v == Reference_vertex() ? Vertex_handle() : Vertex_handle(anchor_.get(), Lower::id(v));
   }
   Facet from_reference(const Reference_facet& f) const { return Facet(from_reference(f.first), f.second); }
   Edge from_reference(const Reference_edge& e) const { return Edge(from_reference(e.first), e.second, e.third); }
@@ -1568,8 +1481,7 @@ private:
     Locate_type lt;
     int li, lj;
     const Cell_handle c = locate(p, lt, li, lj, hint);
-    if(lt == OUTSIDE_CONVEX_HULL)
-      throw std::invalid_argument("segment traverser: the segment's source lies outside the convex hull");
+    if(lt == OUTSIDE_CONVEX_HULL) return Segment_walk(this, p, q).run_from_outside(c);
     unsigned mask = 15u;
     if(lt == VERTEX) mask = 1u << li;
     else if(lt == EDGE) mask = (1u << li) | (1u << lj);
@@ -1581,6 +1493,12 @@ private:
     CGAL_precondition(dimension() == 3 && vs != vt && !is_infinite(vs) && !is_infinite(vt));
     const Cell_handle c = vs->cell();
     return Segment_walk(this, vs->point(), vt->point()).run({c, 1u << c->index(vs)});
+  }
+  std::vector<Cell_handle> planar_segment_cells(typename Lower::Delaunay::Segment_cell_iterator it) const
+  {
+    std::vector<Cell_handle> cells;
+    for(; it != lower().delaunay().segment_traverser_cells_end(); ++it) cells.push_back(from_reference(Reference_cell(it)));
+    return cells;
   }
   std::vector<Simplex> simplices_of(const Segment_walk_result& walk) const
   {
@@ -1602,12 +1520,7 @@ private:
     typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<Segment_cell_iterator, Cell_handle> Handles;
     return Segment_traverser_cell_handles(Handles(begin), Handles(segment_traverser_cells_end()));
   }
-  // New vertices get Info() and a default user vertex base.
-  void vertices_added()
-  {
-    vertex_infos_.resize(number_of_vertices());
-    user_vertices_.resize(this, number_of_vertices());
-  }
+  void vertices_added() { anchor_->vertices_added(); }
   Cell_handle hint_cell(Vertex_handle hint) const
   {
     return hint == Vertex_handle() ? Cell_handle() : hint->cell();
@@ -1616,18 +1529,18 @@ private:
   void give_new_cells(Vertex_handle v, const std::vector<Tet_id>& ball, OutputItCells& fit) const
   {
     if(dimension() < 3) {
-      for(Tet_id t : ball) *fit++ = Cell_handle(this, t);
+      for(Tet_id t : ball) *fit++ = Cell_handle(anchor_.get(), t);
       return;
     }
     if(ball.empty()) {
       fit = incident_cells(v, fit);
       return;
     }
-    for(Tet_id t : ball) *fit++ = Cell_handle(this, t);
+    for(Tet_id t : ball) *fit++ = Cell_handle(anchor_.get(), t);
   }
   Facet facet_of_code(std::uint64_t code) const
   {
-    return Facet(Cell_handle(this, static_cast<Tet_id>(code >> 2)), static_cast<int>(code & 3));
+    return Facet(Cell_handle(anchor_.get(), static_cast<Tet_id>(code >> 2)), static_cast<int>(code & 3));
   }
   // The infinite vertex first, then by id (the order of handles in CGAL's
   // containers: the infinite vertex is created first).
@@ -1639,7 +1552,7 @@ private:
   void cells_around(Vertex_handle v, std::vector<Tet_id>& cells) const
   {
     CGAL_precondition(dimension() == 3);
-    Fast_Delaunay_triangulation_3_internal::cells_around_vertex(core_.mesh, incident_cell_of(v.index()).index(),
+    Fast_Delaunay_triangulation_3_internal::cells_around_vertex(anchor_->core.mesh, incident_cell_of(v.index()).index(),
                                                                 v.index(), cells);
   }
   template <class OutputIterator>
@@ -1648,28 +1561,28 @@ private:
     std::vector<Tet_id> cells;
     cells_around(v, cells);
     for(Tet_id t : cells)
-      if(!finite_only || !core_.mesh.is_ghost(t)) *out++ = Cell_handle(this, t);
+      if(!finite_only || !anchor_->core.mesh.is_ghost(t)) *out++ = Cell_handle(anchor_.get(), t);
     return out;
   }
   // Each facet once, from the cell of smaller index.
   template <class OutputIterator>
   OutputIterator facets_around(Vertex_handle v, OutputIterator out, bool finite_only) const
   {
-    const Flat_storage& m = core_.mesh;
+    const Flat_storage& m = anchor_->core.mesh;
     std::vector<Tet_id> cells;
     cells_around(v, cells);
     for(Tet_id t : cells)
       for(int f = 0; f < 4; ++f) {
         if(m.vertex(t, f) == v.index() || m.neighbor(t, f) < t) continue;
         if(finite_only && m.is_ghost(t) && f != 3) continue;
-        *out++ = Facet(Cell_handle(this, t), f);
+        *out++ = Facet(Cell_handle(anchor_.get(), t), f);
       }
     return out;
   }
   template <class OutputIterator>
   OutputIterator edges_around(Vertex_handle v, OutputIterator out, bool finite_only) const
   {
-    const Flat_storage& m = core_.mesh;
+    const Flat_storage& m = anchor_->core.mesh;
     std::vector<Tet_id> cells, cell_of_edge;
     std::vector<Vertex_id> vertices;
     cells_around(v, cells);
@@ -1679,7 +1592,7 @@ private:
       // infinite vertex among its "finite" incident edges too.
       if(finite_only && vertices[k] == Fast_Delaunay_triangulation_3_internal::ghost_vertex) continue;
       const Tet_id t = cell_of_edge[k];
-      *out++ = Edge(Cell_handle(this, t), Fast_Delaunay_triangulation_3_internal::index_of(m, t, v.index()),
+      *out++ = Edge(Cell_handle(anchor_.get(), t), Fast_Delaunay_triangulation_3_internal::index_of(m, t, v.index()),
                     Fast_Delaunay_triangulation_3_internal::index_of(m, t, vertices[k]));
     }
     return out;
@@ -1690,9 +1603,9 @@ private:
     std::vector<Tet_id> cells;
     std::vector<Vertex_id> vertices;
     cells_around(v, cells);
-    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(core_.mesh, cells, v.index(), vertices, nullptr);
+    Fast_Delaunay_triangulation_3_internal::vertices_around_vertex(anchor_->core.mesh, cells, v.index(), vertices, nullptr);
     for(Vertex_id w : vertices)
-      if(!finite_only || w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) *out++ = Vertex_handle(this, w);
+      if(!finite_only || w != Fast_Delaunay_triangulation_3_internal::ghost_vertex) *out++ = Vertex_handle(anchor_.get(), w);
     return out;
   }
 
@@ -1702,30 +1615,15 @@ private:
   {
     const std::size_t n = xyz.size() / 3;
     Core::check_finite(xyz.data(), n);
-    incident_cells_.clear();
-    core_.partitions = partitions_for_insertion();
-    const std::size_t added = core_.insert(xyz.data(), n, vertex_of_input, &xyz);
+    anchor_->incident_cells.clear();
+    anchor_->core.partitions = partitions_for_insertion();
+    const std::size_t added = anchor_->core.insert(xyz.data(), n, vertex_of_input, &xyz);
     vertices_added();
     return static_cast<std::ptrdiff_t>(added);
   }
 
-  std::size_t cell_slots() const { return dimension() < 3 ? 0 : core_.mesh.number_of_slots(); }
+  std::size_t cell_slots() const { return dimension() < 3 ? 0 : anchor_->core.mesh.number_of_slots(); }
   Vertex_id vertex_count() const { return static_cast<Vertex_id>(number_of_vertices()); }
-
-  // One tetrahedron per finite vertex (dimension 3; below it CGAL's
-  // triangulation knows v->cell()).
-  void build_incident_cells() const
-  {
-    const Flat_storage& m = core_.mesh;
-    incident_cells_.assign(number_of_vertices(), Tet_id(-1));
-    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
-      if(!m.is_live(t)) continue;
-      for(int i = 0; i < 4; ++i) {
-        const Vertex_id v = m.vertex(t, i);
-        if(v != Fast_Delaunay_triangulation_3_internal::ghost_vertex) incident_cells_[v] = t;
-      }
-    }
-  }
 
   template <class InputIterator>
   static void append_coordinates(InputIterator first, InputIterator last, std::vector<double>& xyz,
@@ -1748,17 +1646,10 @@ private:
 
   static constexpr int edge_vertex[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
-  Geom_traits traits_;
-  Core core_;
+  // Never null: a moved-from triangulation gets a new, empty anchor.
+  std::unique_ptr<Anchor> anchor_;
   Lock_data_structure* lock_ds_ = nullptr;
   int threads_ = std::is_same<Concurrency_tag, Parallel_tag>::value ? 0 : 1;
-  mutable std::vector<Tet_id> incident_cells_; // lazily built v->cell() cache
-  Fast_Delaunay_triangulation_3_internal::Vertex_infos<Vertex_info> vertex_infos_;
-  Fast_Delaunay_triangulation_3_internal::Cell_infos<Cell_info> cell_infos_;
-  Fast_Delaunay_triangulation_3_internal::User_vertices<typename std::conditional<has_user_vertex_base, Vertex, void>::type>
-      user_vertices_;
-  Fast_Delaunay_triangulation_3_internal::User_cells<typename std::conditional<has_user_cell_base, Cell, void>::type>
-      user_cells_;
 };
 
 // Writes `tr` as CGAL::Triangulation_3's operator<< writes the same

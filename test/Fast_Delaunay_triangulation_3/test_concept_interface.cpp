@@ -72,6 +72,33 @@ std::size_t count(Iterator first, Iterator last)
   return static_cast<std::size_t>(std::distance(first, last));
 }
 
+// Dimension -1 (no point, or after clear()): one cell, which holds the
+// infinite vertex only and has no neighbour, and no cell, facet or edge to
+// iterate over.
+template <class Tr>
+void expect_empty_with_infinite_cell(const Tr& tr)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  EXPECT_EQ(tr.dimension(), -1);
+  EXPECT_EQ(tr.number_of_vertices(), 0u);
+  EXPECT_EQ(tr.number_of_cells(), 0u);
+  EXPECT_EQ(tr.number_of_facets(), 0u);
+  EXPECT_EQ(tr.number_of_edges(), 0u);
+  const Cell_handle c = tr.infinite_cell();
+  ASSERT_TRUE(c != Cell_handle());
+  EXPECT_TRUE(c->vertex(0) == tr.infinite_vertex());
+  for(int i = 1; i < 4; ++i) EXPECT_TRUE(c->vertex(i) == Vertex_handle());
+  for(int i = 0; i < 4; ++i) EXPECT_TRUE(c->neighbor(i) == Cell_handle());
+  EXPECT_TRUE(tr.infinite_vertex()->cell() == c);
+  EXPECT_TRUE(c->has_vertex(tr.infinite_vertex()));
+  EXPECT_EQ(count(tr.all_cells_begin(), tr.all_cells_end()), 0u);
+  EXPECT_EQ(count(tr.all_facets_begin(), tr.all_facets_end()), 0u);
+  EXPECT_EQ(count(tr.all_edges_begin(), tr.all_edges_end()), 0u);
+  EXPECT_EQ(count(tr.all_vertices_begin(), tr.all_vertices_end()), 1u);
+  EXPECT_TRUE(tr.is_valid());
+}
+
 // The vertices of a facet or an edge, sorted by handle order: the same for
 // every (cell, index) representation of it.
 template <class Tr>
@@ -109,6 +136,7 @@ TYPED_TEST(Concept, EmptyTriangulation)
   ASSERT_EQ(count(tr.all_vertices_begin(), tr.all_vertices_end()), 1u);
   EXPECT_TRUE(typename TypeParam::Vertex_handle(tr.all_vertices_begin()) == tr.infinite_vertex());
   EXPECT_TRUE(tr.is_infinite(tr.infinite_vertex()));
+  expect_empty_with_infinite_cell(tr);
 }
 
 TYPED_TEST(Concept, CountsEqualIteration)
@@ -525,6 +553,65 @@ TYPED_TEST(Concept, SwapExchangesTriangulations)
   expect_same_as_cgal(empty, a_reference);
 }
 
+// Handles point into the data, which swap() and the moves hand over: a
+// handle taken before designates the same vertex or cell afterwards, in the
+// triangulation that now holds the data; handles kept as map keys still find
+// their entries; an iterator over all cells goes on over the same cells.
+TYPED_TEST(Concept, HandlesFollowTheData)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  const std::vector<Point> a_points = to_points<Point>(make_points("uniform", 80, 31));
+  const std::vector<Point> b_points = to_points<Point>(make_points("grid", 64, 32));
+  TypeParam a(a_points.begin(), a_points.end());
+  TypeParam b(b_points.begin(), b_points.end());
+
+  std::map<Vertex_handle, Point> point_of;
+  for(auto v = a.finite_vertices_begin(); v != a.finite_vertices_end(); ++v) point_of[v] = v->point();
+  std::vector<std::pair<Cell_handle, std::array<Vertex_handle, 4>>> cells;
+  for(auto c = a.all_cells_begin(); c != a.all_cells_end(); ++c)
+    cells.push_back({c, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
+  const Vertex_handle infinite = a.infinite_vertex();
+  const auto rest = std::next(a.all_cells_begin(), 5);
+
+  // Every handle of a's data, checked in the triangulation `holder`.
+  auto expect_held_by = [&](const TypeParam& holder, const char* when) {
+    SCOPED_TRACE(when);
+    EXPECT_TRUE(holder.infinite_vertex() == infinite);
+    std::set<Vertex_handle> held(holder.finite_vertex_handles().begin(), holder.finite_vertex_handles().end());
+    for(const auto& vp : point_of) {
+      EXPECT_EQ(held.count(vp.first), 1u);
+      EXPECT_TRUE(vp.first->point() == vp.second);
+    }
+    std::set<Cell_handle> held_cells(holder.all_cell_handles().begin(), holder.all_cell_handles().end());
+    EXPECT_EQ(held_cells.size(), cells.size());
+    for(const auto& c : cells) {
+      EXPECT_EQ(held_cells.count(c.first), 1u);
+      for(int i = 0; i < 4; ++i) EXPECT_TRUE(c.first->vertex(i) == c.second[i]);
+    }
+    EXPECT_EQ(count(rest, holder.all_cells_end()), cells.size() - 5);
+    EXPECT_TRUE(holder.is_valid());
+  };
+
+  a.swap(b);
+  expect_held_by(b, "after a.swap(b)");
+  TypeParam moved(std::move(b));
+  expect_held_by(moved, "after move construction");
+  TypeParam assigned(b_points.begin(), b_points.end());
+  assigned = std::move(moved);
+  expect_held_by(assigned, "after move assignment");
+  // The other triangulation has b's points, and handles of its own.
+  std::vector<Point> expected = b_points, held;
+  for(auto v = a.finite_vertices_begin(); v != a.finite_vertices_end(); ++v) {
+    held.push_back(v->point());
+    EXPECT_EQ(point_of.count(v), 0u);
+  }
+  std::sort(expected.begin(), expected.end());
+  std::sort(held.begin(), held.end());
+  expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+  EXPECT_TRUE(held == expected);
+}
+
 TYPED_TEST(Concept, ClearEmptiesAndAllowsReuse)
 {
   const std::vector<Point> points = to_points<Point>(make_points("clusters", 100, 27));
@@ -539,6 +626,7 @@ TYPED_TEST(Concept, ClearEmptiesAndAllowsReuse)
   EXPECT_TRUE(tr.finite_vertices_begin() == tr.finite_vertices_end());
   EXPECT_EQ(count(tr.all_vertices_begin(), tr.all_vertices_end()), 1u);
   EXPECT_TRUE(tr.is_valid());
+  expect_empty_with_infinite_cell(tr);
   EXPECT_EQ(tr.insert(points.begin(), points.end()), std::ptrdiff_t(reference.number_of_vertices()));
   expect_same_as_cgal(tr, reference);
 }
@@ -650,9 +738,35 @@ TEST(Fast_only, MovedFromIsEmptyAndValid)
     EXPECT_EQ(t->number_of_cells(), 0u);
     EXPECT_TRUE(t->finite_vertices_begin() == t->finite_vertices_end());
     EXPECT_TRUE(t->is_valid());
+    expect_empty_with_infinite_cell(*t);
   }
   EXPECT_EQ(assigned.number_of_vertices(), points.size());
   EXPECT_TRUE(assigned.is_valid());
+}
+
+// Beyond what CGAL 5.5 guarantees (its finite iterators test finiteness
+// against the object they came from): every iterator of this class, finite
+// ones, facets and edges included, follows the data through swap() and moves.
+TEST(Fast_only, IteratorsFollowTheData)
+{
+  const std::vector<Point> points = to_points<Point>(make_points("uniform", 60, 33));
+  Fast_dt a(points.begin(), points.end());
+  auto cells = std::next(a.finite_cells_begin(), 3);
+  auto facets = std::next(a.finite_facets_begin(), 3);
+  auto edges = std::next(a.finite_edges_begin(), 3);
+  auto vertices = std::next(a.finite_vertices_begin(), 3);
+  const std::size_t n_cells = count(cells, a.finite_cells_end()), n_facets = count(facets, a.finite_facets_end()),
+                    n_edges = count(edges, a.finite_edges_end()), n_vertices = count(vertices, a.finite_vertices_end());
+  const Fast_dt::Cell_handle first_cell = cells;
+  Fast_dt b;
+  b.swap(a);
+  Fast_dt c(std::move(b));
+  EXPECT_EQ(a.number_of_vertices(), 0u);
+  EXPECT_TRUE(Fast_dt::Cell_handle(cells) == first_cell);
+  EXPECT_EQ(count(cells, c.finite_cells_end()), n_cells);
+  EXPECT_EQ(count(facets, c.finite_facets_end()), n_facets);
+  EXPECT_EQ(count(edges, c.finite_edges_end()), n_edges);
+  EXPECT_EQ(count(vertices, c.finite_vertices_end()), n_vertices);
 }
 
 // Ranges of this package that CGAL 5.5 lacks (finite_cells(), all_cells(),

@@ -10,6 +10,7 @@
 // it names (as sets where CGAL's order depends on its own history).
 #include "triangulation_checks.h"
 
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_data_structure_3.h>
@@ -572,6 +573,98 @@ TEST(Lower_dimensional_insertion, OnePointAtATimeWithHints)
     }
   }
   EXPECT_EQ(fast.dimension(), 3);
+}
+
+// A cell base of a user's own (CGAL's Rebind_TDS protocol) with a label.
+template <class GT, class Cb = CGAL::Delaunay_triangulation_cell_base_3<GT>>
+class Labelled_cell_base : public Cb
+{
+public:
+  std::string label;
+  template <class TDS2>
+  struct Rebind_TDS
+  {
+    typedef typename Cb::template Rebind_TDS<TDS2>::Other Cb2;
+    typedef Labelled_cell_base<GT, Cb2> Other;
+  };
+  using Cb::Cb;
+};
+
+// CGAL changes some cells in place and they keep their infos: the cell of
+// the empty triangulation becomes the infinite point cell, each change of
+// dimension below 3 extends every cell by a vertex, in dimension 1 a split
+// segment keeps one of its ends, and a point that lifts dimension 2 to 3 makes
+// every triangle a tetrahedron with it.  After every insertion the cells, by
+// their vertices, carry the same labels as CGAL's; then each cell still
+// without one gets the next label, in key order.  `label(c)` is the label of
+// cell c (its info, or a member of a user's cell base).
+template <class Cb, class Label>
+void expect_labels_follow_cells(const Label& label)
+{
+  typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>, Cb> Tds;
+  CGAL::Fast_Delaunay_triangulation_3<K, Tds> fast;
+  CGAL::Delaunay_triangulation_3<K, Tds> cgal;
+  // Collinear points splitting segments and extending the line at both ends,
+  // coplanar ones, one that lifts the points to 3D, one more.
+  const std::vector<Point> points = {Point(0, 0, 0), Point(4, 0, 0), Point(2, 0, 0), Point(-2, 0, 0),
+                                     Point(3, 0, 0), Point(9, 0, 0), Point(1, 0, 0), Point(3, 3, 0),
+                                     Point(1, -2, 0), Point(2, 1, 0), Point(-5, 5, 0), Point(1, 1, 3),
+                                     Point(0.5, 0.25, -2)};
+  // Every cell of the triangulation, once: the point cells below dimension 1.
+  auto cells = [](const auto& tr) {
+    std::vector<decltype(tr.infinite_cell())> c;
+    if(tr.dimension() == 3)
+      for(auto x = tr.all_cells_begin(); x != tr.all_cells_end(); ++x) c.push_back(x);
+    else if(tr.dimension() == 2)
+      for(auto f = tr.all_facets_begin(); f != tr.all_facets_end(); ++f) c.push_back(f->first);
+    else if(tr.dimension() == 1)
+      for(auto e = tr.all_edges_begin(); e != tr.all_edges_end(); ++e) c.push_back(e->first);
+    else {
+      c.push_back(tr.infinite_cell());
+      if(tr.dimension() == 0) c.push_back(tr.infinite_cell()->neighbor(0));
+    }
+    return c;
+  };
+  auto labels = [&](const auto& tr) {
+    std::vector<std::pair<Simplex_key, std::string>> l;
+    for(auto c : cells(tr)) l.emplace_back(cell_key(tr, c), label(c));
+    return sorted(l);
+  };
+  auto label_new_cells = [&](auto& tr, int first_label) {
+    std::vector<std::pair<Simplex_key, decltype(tr.infinite_cell())>> unlabelled;
+    for(auto c : cells(tr))
+      if(label(c).empty()) unlabelled.emplace_back(cell_key(tr, c), c);
+    std::sort(unlabelled.begin(), unlabelled.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(auto& u : unlabelled) label(u.second) = "cell " + std::to_string(first_label++);
+    return first_label;
+  };
+  label(fast.infinite_cell()) = label(cgal.infinite_cell()) = "empty";
+  int next_label = 0, kept_in_3d = 0;
+  for(std::size_t k = 0; k < points.size(); ++k) {
+    SCOPED_TRACE("point " + std::to_string(k));
+    fast.insert(points[k]);
+    cgal.insert(points[k]);
+    ASSERT_EQ(fast.dimension(), cgal.dimension());
+    const auto expected = labels(cgal);
+    EXPECT_EQ(labels(fast), expected);
+    if(fast.dimension() == 3)
+      for(const auto& l : expected) kept_in_3d += !l.second.empty();
+    label_new_cells(fast, next_label);
+    next_label = label_new_cells(cgal, next_label);
+  }
+  EXPECT_EQ(fast.dimension(), 3);
+  EXPECT_GT(kept_in_3d, 10) << "the test needs labels that survive the lift";
+}
+
+TEST(Lower_dimensional_insertion, CellInfosFollowCellsChangedInPlace)
+{
+  expect_labels_follow_cells<CGAL::Triangulation_cell_base_with_info_3<std::string, K>>(
+      [](auto c) -> std::string& { return c->info(); });
+}
+
+TEST(Lower_dimensional_insertion, UserCellBasesFollowCellsChangedInPlace)
+{
+  expect_labels_follow_cells<Labelled_cell_base<K>>([](auto c) -> std::string& { return c->label; });
 }
 
 // A cell info set on a triangle survives insertions that do not destroy the

@@ -62,10 +62,12 @@ Default: `Default`.
   (`segment_traverser_cells_begin(p, q, hint)`, `segment_traverser_cells_end()`,
   `segment_traverser_cell_handles(p, q, hint)`, `segment_traverser_simplices_begin(p, q, hint)`,
   `segment_traverser_simplices_end()`, `segment_traverser_simplices(p, q, hint)`) and for two
-  vertices, in dimension 3, with `p` in the convex hull (`std::invalid_argument` otherwise); it
-  gives CGAL's cells and simplices when the segment meets no vertex or edge (but its ends), and
-  otherwise the faces the segment meets (CGAL 5.5's sequence there depends on its storage; the
-  user manual says how it differs).
+  vertices, in dimension 3 (the cells between two points also in dimension 2); it gives CGAL's cells and simplices when the segment meets no
+  vertex or edge (but its ends), and otherwise the faces the segment meets (CGAL 5.5's sequence
+  there depends on its storage; the user manual says how it differs). A segment that starts
+  outside the convex hull is walked as CGAL walks it, from the infinite cell of `locate(p)`
+  through infinite cells into the hull; in dimension 2 CGAL's cell traverser between two points
+  answers (CGAL 5.5's simplex traverser and its walk from a vertex are broken there).
 - Point location, the conflict zone, the incident / adjacent queries and
   the circulators, the Voronoi duals and `is_Gabriel()` are provided in
   dimension 3 (the manual lists them); stream operators read and write
@@ -73,16 +75,16 @@ Default: `Default`.
 - Below dimension 3 the cells, counts and iterators are those of
   `Delaunay_triangulation_3` (Section
   \ref Fast_Delaunay_triangulation_3DegenerateDimensions of the manual), but
-  point location and the incident / adjacent queries need dimension 3, a cell
-  info does not survive an insertion that adds a vertex, and in the empty
-  triangulation `infinite_cell()` is a null handle.
-- Handles are a pair (pointer to the triangulation, index in the flat
-  arrays), and iterators hold such a pair. A handle names a slot of the
-  triangulation it came from: after a move, a swap or an assignment it still
-  refers to that object, not to the data, whereas a handle of
-  `Delaunay_triangulation_3` follows the data. Vertex handles stay valid
-  across insertions. A cell handle taken before an insertion may name a
-  different cell afterwards, because the slots of deleted cells are reused.
+  the iteration order is that of the slots; the queries CGAL defines there
+  are answered by a `Delaunay_triangulation_3` kept beside the arrays. Even
+  the empty triangulation has its infinite cell, as in CGAL.
+- Handles are a pair (pointer to the triangulation's data, index in the flat
+  arrays), and iterators hold such a pair. The data lives on the heap and
+  changes hands with `swap()` and the moves, so handles and iterators follow
+  it, as those of `Delaunay_triangulation_3` do; a copy has handles of its
+  own. Vertex handles stay valid across insertions. A cell handle taken
+  before an insertion may name a different cell afterwards, because the
+  slots of deleted cells are reused.
 - `Vertex::point()` returns the point by value; the point of the infinite
   vertex is `Point(0, 0, 0)`.
 - All iterators are forward iterators (those of `Delaunay_triangulation_3` are
@@ -364,7 +366,8 @@ Copies the arrays of `other`. Handles of `other` keep referring to `other`.
 Fast_Delaunay_triangulation_3(const Fast_Delaunay_triangulation_3& other);
 
 /*!
-Takes the arrays of `other` and leaves `other` empty (dimension -1, usable).
+Takes the data of `other`, which handles of `other` follow, and leaves
+`other` empty (dimension -1, usable, with the default options).
 */
 Fast_Delaunay_triangulation_3(Fast_Delaunay_triangulation_3&& other) noexcept;
 
@@ -373,15 +376,17 @@ Fast_Delaunay_triangulation_3(Fast_Delaunay_triangulation_3&& other) noexcept;
 Fast_Delaunay_triangulation_3& operator=(const Fast_Delaunay_triangulation_3& other);
 
 /*!
-Leaves `other` empty.
+Takes the data of `other`, which handles of `other` follow, and leaves
+`other` empty.
 */
 Fast_Delaunay_triangulation_3& operator=(Fast_Delaunay_triangulation_3&& other) noexcept;
 
 /*!
-Exchanges the contents of the two triangulations. Handles keep referring to
-the object they were taken from.
+Exchanges the contents of the two triangulations in constant time. Handles
+and iterators follow the data: one taken from `*this` designates the same
+vertex or cell, now in `other`.
 */
-void swap(Fast_Delaunay_triangulation_3& other);
+void swap(Fast_Delaunay_triangulation_3& other) noexcept;
 
 /*!
 Removes all vertices and cells; the dimension becomes -1. The options
@@ -524,8 +529,9 @@ size_type number_of_edges() const;
 Vertex_handle infinite_vertex() const;
 
 /*!
-An infinite cell (a cell with the infinite vertex below dimension 3), or a
-null handle in dimension -1. Scans the cells.
+An infinite cell (a cell with the infinite vertex below dimension 3); in
+dimension -1 the cell that holds only the infinite vertex, as in CGAL.
+Scans the cells in dimension 3.
 */
 Cell_handle infinite_cell() const;
 

@@ -167,7 +167,7 @@ void convert_to_c3t3(const Fast_Delaunay_triangulation_3<Gt, Tds, Lp, Lds>& sour
   std::vector<Subdomain_index> subdomain(mesh.number_of_slots(), Subdomain_index());
   for(Tet_id t = 0; t < mesh.number_of_slots(); ++t) {
     if(!mesh.is_live(t) || mesh.is_ghost(t)) continue;
-    subdomain[t] = subdomain_of_cell(typename Source::Cell_handle(&source, t));
+    subdomain[t] = subdomain_of_cell(typename Source::Cell_handle(source.storage_anchor(), t));
     for(int i = 0; i < 4; ++i) {
       cell_of[t]->vertex(i)->set_dimension(3);
       cell_of[t]->vertex(i)->set_index(subdomain[t]);

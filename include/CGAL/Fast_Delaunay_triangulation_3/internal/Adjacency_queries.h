@@ -150,7 +150,7 @@ public:
   typedef Bidirectional_circulator_tag iterator_category;
 
   Cell_circulator_around_edge() = default;
-  Cell_circulator_around_edge(const Tr* tr, Vertex_id a, Vertex_id b, Tet_id start)
+  Cell_circulator_around_edge(const typename Tr::Anchor* tr, Vertex_id a, Vertex_id b, Tet_id start)
       : a_(a), b_(b), pos_(tr, start)
   {}
 
@@ -183,7 +183,7 @@ public:
   friend bool operator!=(const Cell_circulator_around_edge& x, const Cell_handle& c) { return x.pos_ != c; }
 
 private:
-  const Tr* tr() const { return pos_.owner(); }
+  const typename Tr::Anchor* tr() const { return pos_.owner(); }
   Vertex_id a_ = 0, b_ = 0;
   Cell_handle pos_;
 };
@@ -204,7 +204,7 @@ public:
   typedef Bidirectional_circulator_tag iterator_category;
 
   Facet_circulator_around_edge() = default;
-  Facet_circulator_around_edge(const Tr* tr, Vertex_id a, Vertex_id b, Tet_id start) : cells_(tr, a, b, start), a_(a), b_(b) {}
+  Facet_circulator_around_edge(const typename Tr::Anchor* tr, Vertex_id a, Vertex_id b, Tet_id start) : cells_(tr, a, b, start), a_(a), b_(b) {}
 
   Facet operator*() const
   {
@@ -250,7 +250,7 @@ bool find_cell_with(const Tr& tr, typename Tr::Vertex_handle u,
     }
     if(!all) continue;
     index[0] = index_of(m, t, u.index());
-    c = typename Tr::Cell_handle(&tr, t);
+    c = typename Tr::Cell_handle(tr.storage_anchor(), t);
     return true;
   }
   return false;

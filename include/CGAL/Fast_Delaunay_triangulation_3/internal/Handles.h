@@ -4,8 +4,10 @@
 // Lightweight vertex and cell handles over the flat arrays, with the member
 // functions of CGAL's Triangulation_3 vertices and cells (v->point(),
 // c->vertex(i), c->neighbor(i), c->index(v), ...), and the iterators that
-// enumerate them.  A handle is a (triangulation, index) pair: copying the
-// triangulation does not carry handles over, as with CGAL.
+// enumerate them.  A handle is a (storage anchor, index) pair: the anchor
+// (Storage_anchor.h) holds the triangulation's data and goes with it through
+// swap() and moves, so handles follow the data as CGAL's do; a copy of the
+// triangulation has an anchor of its own, so handles are not carried over.
 
 #ifndef CGAL_FDT3_INTERNAL_HANDLES_H
 #define CGAL_FDT3_INTERNAL_HANDLES_H
@@ -21,17 +23,18 @@
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 
-// A vertex seen through the triangulation Tr (which provides point_of,
-// incident_cell_of and the handle types).
+// A vertex seen through the anchor of the triangulation Tr (which provides
+// point_of, incident_cell_of and the handle types).
 template <class Tr>
 class Vertex_facade
 {
 public:
   typedef typename Tr::Point Point;
   typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Anchor Anchor;
 
   Vertex_facade() = default;
-  Vertex_facade(const Tr* tr, Vertex_id id) : tr_(tr), id_(id) {}
+  Vertex_facade(const Anchor* tr, Vertex_id id) : tr_(tr), id_(id) {}
 
   Point point() const { return tr_->point_of(id_); }
   Cell_handle cell() const { return tr_->incident_cell_of(id_); }
@@ -42,10 +45,10 @@ public:
   typename T::Vertex_info& info() const { return tr_->vertex_info(id_); }
 
   Vertex_id id() const { return id_; }
-  const Tr* triangulation() const { return tr_; }
+  const Anchor* anchor() const { return tr_; }
 
 private:
-  const Tr* tr_ = nullptr;
+  const Anchor* tr_ = nullptr;
   Vertex_id id_ = 0;
 };
 
@@ -55,9 +58,10 @@ class Cell_facade
 public:
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Anchor Anchor;
 
   Cell_facade() = default;
-  Cell_facade(const Tr* tr, Tet_id id) : tr_(tr), id_(id) {}
+  Cell_facade(const Anchor* tr, Tet_id id) : tr_(tr), id_(id) {}
 
   // Below dimension 3, slots above the dimension are null handles, as in CGAL.
   Vertex_handle vertex(int i) const
@@ -112,19 +116,21 @@ public:
   template <class T = Tr>
   typename T::Cell_info& info() const { return tr_->cell_info(id_); }
   // Dimension 3, finite cell: the centre of its circumscribed sphere.
-  typename Tr::Point circumcenter() const { return tr_->dual(Cell_handle(tr_, id_)); }
+  typename Tr::Point circumcenter() const { return tr_->circumcenter(id_); }
 
   Tet_id id() const { return id_; }
-  const Tr* triangulation() const { return tr_; }
+  const Anchor* anchor() const { return tr_; }
 
 private:
   const Flat_storage& mesh() const { return tr_->flat_storage(); }
-  const Tr* tr_ = nullptr;
+  const Anchor* tr_ = nullptr;
   Tet_id id_ = 0;
 };
 
-// Equality, order and hash of handles by (triangulation, index), so handles
-// work as std::map / unordered_map keys.  Handle provides owner() and index().
+// Equality, order and hash of handles by (anchor, index), so handles work as
+// std::map / unordered_map keys; the anchor does not change with swap() or a
+// move, so neither does the order of the keys.  Handle provides owner() and
+// index().
 template <class Handle>
 class Handle_order
 {
@@ -153,18 +159,17 @@ class Flat_handle : public Handle_order<Flat_handle<Facade, Index>>
 {
 public:
   typedef Facade value_type;
-  typedef typename std::remove_cv<typename std::remove_pointer<decltype(
-      std::declval<Facade>().triangulation())>::type>::type Triangulation;
+  typedef typename Facade::Anchor Anchor;
 
   Flat_handle() = default;
   Flat_handle(std::nullptr_t) {}
-  Flat_handle(const Triangulation* tr, Index id) : facade_(tr, id) {}
+  Flat_handle(const Anchor* anchor, Index id) : facade_(anchor, id) {}
 
   const Facade* operator->() const { return &facade_; }
   const Facade& operator*() const { return facade_; }
-  explicit operator bool() const { return facade_.triangulation() != nullptr; }
+  explicit operator bool() const { return facade_.anchor() != nullptr; }
 
-  const Triangulation* owner() const { return facade_.triangulation(); }
+  const Anchor* owner() const { return facade_.anchor(); }
   Index index() const { return facade_.id(); }
 
 private:
@@ -183,10 +188,10 @@ public:
   typedef typename std::remove_reference<reference>::type value_type;
   typedef value_type* pointer;
   typedef std::ptrdiff_t difference_type;
-  typedef typename Handle::Triangulation Tr;
+  typedef typename Handle::Anchor Anchor;
 
   Filtered_index_iterator() = default;
-  Filtered_index_iterator(const Tr* tr, Index id, Index end) : handle_(tr, id), end_(end)
+  Filtered_index_iterator(const Anchor* anchor, Index id, Index end) : handle_(anchor, id), end_(end)
   {
     skip();
   }

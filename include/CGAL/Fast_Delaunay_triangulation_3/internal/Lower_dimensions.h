@@ -14,6 +14,8 @@
 // mapped both ways: a CGAL cell knows its slot (cell info), a slot its CGAL
 // cell, a CGAL vertex its id (vertex info), an id its CGAL vertex.
 //
+//   dimension -1: 1 cell (infinite), no neighbour: even the empty
+//                 triangulation has its infinite cell;
 //   dimension 0:  2 cells (v) and (infinite), neighbours of each other;
 //   dimension 1:  segments (v0, v1); neighbour i is opposite vertex i; the
 //                 n - 1 finite segments and 2 infinite ones form a cycle in
@@ -22,13 +24,14 @@
 //                 edge runs the other way in the neighbour), finite ones and
 //                 one infinite triangle per hull edge: 2n - 2 in all.
 //
-// Slots above the dimension hold `no_vertex` and a neighbour code pointing
-// back at the cell itself (never followed: handles answer null there).  The
-// infinite vertex may sit in any slot of a lower-dimensional cell, as in
-// CGAL, so Flat_storage::is_ghost (slot 3) is meaningless below dimension 3;
-// `ghost_tets` still counts the cells that have it.  Nothing here runs in
-// dimension 3: lifting to 3D drops the CGAL triangulation and rebuilds the
-// arrays from scratch (Triangulation_core::lift_to_dimension_3).
+// Slots above the dimension (above 0 in dimension -1) hold `no_vertex` and
+// a neighbour code pointing back at the cell itself (never followed: handles
+// answer null there).  The infinite vertex may sit in any slot of a
+// lower-dimensional cell, as in CGAL, so Flat_storage::is_ghost (slot 3) is
+// meaningless below dimension 3; `ghost_tets` still counts the cells that
+// have it.  Nothing here runs in dimension 3: lifting to 3D drops the CGAL
+// triangulation and rebuilds the arrays from scratch
+// (Triangulation_core::lift_to_dimension_3).
 
 #ifndef CGAL_FDT3_INTERNAL_LOWER_DIMENSIONS_H
 #define CGAL_FDT3_INTERNAL_LOWER_DIMENSIONS_H
@@ -87,6 +90,16 @@ public:
   typedef Delaunay::Locate_type Locate_type;
   typedef lower_dimensions_detail::Epick::Point_3 Reference_point;
 
+  // A cell that CGAL changed in place, keeping the cell: dimension 1 splits a
+  // segment by moving one of its ends, a change of dimension extends every
+  // cell.  Infos and user records are keyed by the vertex ids of their cell
+  // (Vertex_and_cell_infos.h), so these tell them to follow.
+  struct Renamed_cell
+  {
+    Tet_id slot;
+    Vertex_id before[4];
+  };
+
   // Where a point is, as CGAL's locate() says it.
   struct Location
   {
@@ -115,22 +128,34 @@ public:
   Lower_dimensional_triangulation& operator=(Lower_dimensional_triangulation&&) noexcept = default;
 
   bool active() const { return delaunay_ != nullptr; }
-  // An empty triangulation, beside flat arrays that hold no cell.
-  void start()
+  // An empty triangulation, and its one cell copied into m, which holds no
+  // cell yet.
+  void start(Flat_storage& m)
   {
+    CGAL_precondition(m.live_tets == 0);
     delaunay_.reset(new Delaunay);
     delaunay_->infinite_vertex()->info() = ghost_vertex;
     cells_.clear();
     vertices_.clear();
+    renamed_.clear();
+    copy_all_cells(m);
   }
   void stop()
   {
     delaunay_.reset();
+    std::vector<Renamed_cell>().swap(renamed_);
     std::vector<Reference_cell>().swap(cells_);
     std::vector<Reference_vertex>().swap(vertices_);
   }
 
   const Delaunay& delaunay() const { return *delaunay_; }
+  // The cells changed in place since the last call, oldest first.
+  std::vector<Renamed_cell> take_renamed_cells()
+  {
+    std::vector<Renamed_cell> renamed;
+    renamed.swap(renamed_);
+    return renamed;
+  }
   Reference_cell cell(Tet_id slot) const { return cells_[slot]; }
   static Tet_id slot(Reference_cell c) { return c->info().id; }
   Reference_vertex vertex(Vertex_id v) const
@@ -206,11 +231,11 @@ public:
   // less than 3D (a file read by Triangulation_io.h), in the order of their ids.
   void rebuild(Flat_storage& m)
   {
-    start();
     m.tets.clear();
     m.free_tets.clear();
     m.tet_sub_determinants.clear();
     m.live_tets = m.ghost_tets = 0;
+    start(m);
     Reference_cell hint;
     for(Vertex_id v = 0; v < m.vertices.size(); ++v) {
       const Vertex_id inserted = insert(m, v, hint, nullptr);
@@ -236,16 +261,16 @@ public:
         return fail("vertex " + std::to_string(v) + " is not CGAL's vertex of that id");
     }
     const int dimension = delaunay_->dimension();
-    if(dimension < 0) return m.live_tets == 0 ? true : fail("cells in dimension -1");
     std::size_t cells = 0;
     for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c, ++cells) {
       const Tet_id t = slot(c);
       const std::string at = "slot " + std::to_string(t) + ": ";
       if(t >= m.number_of_slots() || !m.is_live(t) || t >= cells_.size() || cells_[t] != Reference_cell(c))
         return fail("a CGAL cell has no live slot naming it");
+      for(int i = 0; i <= std::max(dimension, 0); ++i)
+        if(m.vertex(t, i) != id(c->vertex(i))) return fail(at + "not CGAL's vertex " + std::to_string(i));
       for(int i = 0; i <= dimension; ++i) {
         const Reference_cell n = c->neighbor(i);
-        if(m.vertex(t, i) != id(c->vertex(i))) return fail(at + "not CGAL's vertex " + std::to_string(i));
         if(m.neighbor_code(t, i) != facet_code(slot(n), n->index(c)))
           return fail(at + "not CGAL's neighbour " + std::to_string(i));
       }
@@ -261,7 +286,6 @@ private:
     vertices_.assign(delaunay_->number_of_vertices(), Reference_vertex());
     for(auto v = delaunay_->finite_vertices_begin(); v != delaunay_->finite_vertices_end(); ++v)
       vertices_[v->info()] = v;
-    if(delaunay_->dimension() < 0) return;
     for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c) {
       if(c->info().id >= cells_.size()) cells_.resize(c->info().id + 1);
       cells_[c->info().id] = c;
@@ -314,9 +338,8 @@ private:
     for(Tet_id t = 0; t < m.number_of_slots(); ++t)
       if(m.is_live(t)) freed.push_back(t);
     std::vector<Reference_cell> changed;
-    if(delaunay_->dimension() >= 0)
-      for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c)
-        changed.push_back(c);
+    for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c)
+      changed.push_back(c);
     resynchronise(m, freed, changed);
   }
 
@@ -345,11 +368,18 @@ private:
       if(t >= cells_.size()) cells_.resize(t + 1);
       cells_[t] = c;
     }
+    std::vector<Renamed_cell> before;
+    for(Tet_id t : kept) {
+      before.push_back(Renamed_cell{t, {}});
+      std::copy(m.tets[t].v, m.tets[t].v + 4, before.back().before);
+    }
     const int dimension = delaunay_->dimension();
     for(Reference_cell c : changed) {
       copy_cell(m, c);
       for(int i = 0; i <= dimension; ++i) copy_cell(m, c->neighbor(i));
     }
+    for(const Renamed_cell& r : before)
+      if(!std::equal(r.before, r.before + 4, m.tets[r.slot].v)) renamed_.push_back(r);
   }
 
   void free_slot(Flat_storage& m, Tet_id t)
@@ -369,12 +399,12 @@ private:
     if(has_vertex(r, 3, ghost_vertex)) --m.ghost_tets;
     const int dimension = delaunay_->dimension();
     for(int i = 0; i < 4; ++i) {
+      // The cell of dimension -1 has its vertex 0 (the infinite vertex) and no neighbour.
+      r.v[i] = i <= std::max(dimension, 0) ? id(c->vertex(i)) : no_vertex;
       if(i > dimension) {
-        r.v[i] = no_vertex;
         r.n[i] = facet_code(t, i);
         continue;
       }
-      r.v[i] = id(c->vertex(i));
       const Reference_cell n = c->neighbor(i);
       r.n[i] = facet_code(slot(n), n->index(c));
     }
@@ -384,6 +414,7 @@ private:
   std::unique_ptr<Delaunay> delaunay_;
   std::vector<Reference_cell> cells_;      // by slot; null for a free slot
   std::vector<Reference_vertex> vertices_; // by vertex id
+  std::vector<Renamed_cell> renamed_;
 };
 
 // Checks the cells of a triangulation of dimension -1 to 2: CGAL's
@@ -399,7 +430,14 @@ inline bool lower_dimensional_cells_are_valid(const Flat_storage& m, int dimensi
     return false;
   };
   const std::size_t n = m.vertices.size();
-  if(dimension == -1) return n == 0 && m.live_tets == 0 ? true : fail("vertices or cells in dimension -1");
+  if(dimension == -1) {
+    if(n != 0 || m.live_tets != 1 || m.ghost_tets != 1) return fail("vertices or cells in dimension -1");
+    const Tet_id t = m.first_live_tet();
+    for(int i = 0; i < 4; ++i)
+      if(m.vertex(t, i) != (i == 0 ? ghost_vertex : no_vertex))
+        return fail("the cell of dimension -1 holds other than the infinite vertex");
+    return true;
+  }
   const std::size_t expected_cells = dimension == 0 ? 2 : dimension == 1 ? n + 1 : 2 * n - 2;
   if(m.live_tets != expected_cells) return fail("wrong number of cells for dimension " + std::to_string(dimension));
 

@@ -25,9 +25,20 @@
 // choice (CGAL 5.5's choice depends on its own storage: a Delaunay_triangulation_3
 // built from the same points in another order may list other cells).
 //
-// The segment must start in the convex hull (closed); it may leave it: the
-// walk then ends with the infinite cell behind the hull facet through which it
-// leaves, as CGAL's does.
+// A segment may leave the hull: the walk then ends with the infinite cell
+// behind the hull facet through which it leaves, as CGAL's does.  One that
+// starts outside the hull follows CGAL 5.5's rule (walk_to_next_3_inf in
+// Triangulation_segment_traverser_3_impl.h), so that the cells are CGAL's:
+// from the infinite cell that locate(p) gives (its finite facet sees p), stay
+// there if q sees that facet too; else cross to the infinite neighbour
+// behind the first plane through p and a hull edge of the cell that has q
+// strictly behind it; else enter the hull through the cell's finite facet.
+// The rule is sound while p sees the cell's facet; CGAL also applies it to
+// cells reached outside whose facet p does not see, and may then enter the
+// hull through a facet the segment misses and walk on inside: this walk ends
+// there instead.  CGAL's choice among several planes with q behind follows
+// its vertex order, and its located cell among several facets that see p its
+// stochastic walk: there the two may differ.
 
 #ifndef CGAL_FDT3_INTERNAL_SEGMENT_TRAVERSER_H
 #define CGAL_FDT3_INTERNAL_SEGMENT_TRAVERSER_H
@@ -76,13 +87,73 @@ public:
   Segment_walk_result<Tr> run(Face start)
   {
     Segment_walk_result<Tr> out;
-    Exact t = 0;
-    Face at = start;
+    walk(out, start, 0);
+    return out;
+  }
+
+  // p strictly outside the hull, in the infinite cell c whose finite facet
+  // sees it.
+  Segment_walk_result<Tr> run_from_outside(Cell_handle c)
+  {
+    Segment_walk_result<Tr> out;
+    Cell_handle previous;
+    // The walk outside never comes back to a cell (each step crosses a plane
+    // through p that q is behind), so it visits each infinite cell once at most.
+    for(std::size_t steps = 0; steps <= tr_->number_of_cells(); ++steps) {
+      out.cells.push_back(c);
+      out.faces.push_back(Face{c, 15u});
+      const int inf = c->index(tr_->infinite_vertex());
+      std::array<Exact_point, 4> v;
+      for(int k = 0; k < 4; ++k) v[k] = k == inf ? q_ : exact(c->vertex(k)->point());
+      if(CGAL::is_positive(determinant(v))) return out; // q sees the facet too
+      v[inf] = p_;
+      const bool p_sees_facet = CGAL::is_positive(determinant(v));
+      int behind = -1;
+      for(int k = 0; k < 4 && behind < 0; ++k) {
+        if(k == inf || c->neighbor(k) == previous) continue;
+        const Exact_point keep = v[k];
+        v[k] = q_;
+        if(CGAL::is_negative(determinant(v))) behind = k;
+        v[k] = keep;
+      }
+      if(behind < 0) {
+        const Cell_handle fin = c->neighbor(inf);
+        if(p_sees_facet) enter_hull(out, fin, fin->index(c));
+        return out;
+      }
+      out.faces.push_back(Face{c, 15u & ~(1u << behind)});
+      previous = c;
+      c = c->neighbor(behind);
+    }
+    CGAL_assertion_msg(false, "segment walk outside the hull does not end");
+    return out;
+  }
+
+private:
+  // Through facet j of the finite cell fin, the first point of the segment
+  // in the hull.
+  void enter_hull(Segment_walk_result<Tr>& out, Cell_handle fin, int j)
+  {
+    const Lambdas l = lambdas(fin);
+    CGAL_assertion(CGAL::is_negative(l.at_p[j]) && !CGAL::is_negative(l.at_q[j]));
+    const Exact t = l.at_p[j] / (l.at_p[j] - l.at_q[j]);
+    const Face at{fin, positive_mask(l, t)};
+    if(t == 1) { // q on the hull
+      add_face(out, at);
+      out.cells.push_back(fin);
+      return;
+    }
+    walk(out, at, t);
+  }
+
+  // From the face `at` of x(t) to q.
+  void walk(Segment_walk_result<Tr>& out, Face at, Exact t)
+  {
     for(;;) {
       Lambdas cell = continuation_cell(at, t, out.cells.empty() ? Cell_handle() : out.cells.back());
       if(cell.c == Cell_handle()) {
         leave_hull(t, out);
-        return out;
+        return;
       }
       const Exact t_out = exit_parameter(cell);
       CGAL_assertion(t < t_out);
@@ -90,13 +161,12 @@ public:
       add_face(out, Face{cell.c, positive_mask(cell, (t + t_out) / 2)});
       add_face(out, Face{cell.c, positive_mask(cell, t_out)});
       out.cells.push_back(cell.c);
-      if(t_out == 1) return out;
+      if(t_out == 1) return;
       t = t_out;
       at = Face{cell.c, positive_mask(cell, t_out)};
     }
   }
 
-private:
   typedef std::array<Exact, 3> Exact_point;
 
   struct Lambdas
@@ -305,8 +375,10 @@ public:
   Segment_cell_iterator() = default;
   explicit Segment_cell_iterator(std::vector<Cell_handle> cells) : Base(std::move(cells)) {}
 
-  reference operator*() const { return *handle(); }
-  pointer operator->() const { return handle().operator->(); }
+  // Through the handle stored in the walk: a facade handle holds the cell it
+  // dereferences to, so a copy of it would not outlive this call.
+  reference operator*() const { return *Base::operator*(); }
+  pointer operator->() const { return Base::operator*().operator->(); }
   operator Cell_handle() const { return handle(); }
   Cell_handle handle() const { return Base::operator*(); }
 

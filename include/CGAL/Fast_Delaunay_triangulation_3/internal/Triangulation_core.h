@@ -82,7 +82,7 @@ public:
   {
     mesh.with_sub_determinants = sub_determinants_by_default;
     reset_bounding_box();
-    lower.start();
+    lower.start(mesh);
   }
 
   void clear()
@@ -90,7 +90,7 @@ public:
     mesh.clear();
     reset_bounding_box();
     dimension = -1;
-    lower.start();
+    lower.start(mesh);
     hint_ = 0;
   }
 

@@ -21,7 +21,7 @@
 //                           whose four vertices changed holds a new cell (the
 //                           reasoning of Cell_infos): its base is reset when
 //                           next reached.
-//   User_handle             (triangulation, index); operator-> is a mutable
+//   User_handle             (storage anchor, index); operator-> is a mutable
 //                           record pointer, as CGAL's handles give mutable
 //                           vertices and cells.
 //   Rebinding_tds<Tr>       what Rebind_TDS is given: its Vertex_handle and
@@ -37,6 +37,7 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_and_cell_infos.h>
 
 #include <CGAL/Triangulation_data_structure_3.h>
 #include <CGAL/Triangulation_ds_vertex_base_3.h>
@@ -132,6 +133,7 @@ class User_vertex : public Base
 public:
   typedef typename Tr::Point Point;
   typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Anchor Anchor;
 
   Point point() const { return tr_->point_of(id_); }
   Cell_handle cell() const { return tr_->incident_cell_of(id_); }
@@ -146,14 +148,14 @@ public:
 
   // Nothing else is named here, so that the user's members (an id() of
   // Triangulation_vertex_base_with_id_3, say) stay visible.
-  void attach_to_triangulation(const Tr* tr, Vertex_id id)
+  void attach_to_triangulation(const Anchor* tr, Vertex_id id)
   {
     tr_ = tr;
     id_ = id;
   }
 
 private:
-  const Tr* tr_ = nullptr;
+  const Anchor* tr_ = nullptr;
   Vertex_id id_ = 0;
 };
 
@@ -189,7 +191,7 @@ public:
   template <class... A>
   void set_neighbors(A&&...) = delete;
 
-  void attach_to_triangulation(const Tr* tr, Tet_id id) { facade_ = Cell_facade<Tr>(tr, id); }
+  void attach_to_triangulation(const typename Tr::Anchor* tr, Tet_id id) { facade_ = Cell_facade<Tr>(tr, id); }
 
 private:
   Cell_facade<Tr> facade_;
@@ -202,21 +204,21 @@ class User_handle : public Handle_order<User_handle<Tr, Record, Index>>
 {
 public:
   typedef Record value_type;
-  typedef Tr Triangulation;
+  typedef typename Tr::Anchor Anchor;
 
   User_handle() = default;
   User_handle(std::nullptr_t) {}
-  User_handle(const Tr* tr, Index id) : tr_(tr), id_(id) {}
+  User_handle(const Anchor* tr, Index id) : tr_(tr), id_(id) {}
 
   Record* operator->() const { return &tr_->user_record(static_cast<const Record*>(nullptr), id_); }
   Record& operator*() const { return *operator->(); }
   explicit operator bool() const { return tr_ != nullptr; }
 
-  const Tr* owner() const { return tr_; }
+  const Anchor* owner() const { return tr_; }
   Index index() const { return id_; }
 
 private:
-  const Tr* tr_ = nullptr;
+  const Anchor* tr_ = nullptr;
   Index id_ = 0;
 };
 
@@ -235,8 +237,8 @@ public:
   }
 
   // After an insertion: new vertices get a default-constructed base.
-  template <class Tr>
-  void resize(const Tr* tr, std::size_t vertices)
+  template <class Anchor>
+  void resize(const Anchor* tr, std::size_t vertices)
   {
     const std::size_t old = records_.size();
     records_.resize(vertices);
@@ -245,9 +247,9 @@ public:
     infinite_.front().attach_to_triangulation(tr, ghost_vertex);
   }
 
-  // After the triangulation was copied, moved or swapped.
-  template <class Tr>
-  void attach(const Tr* tr)
+  // After the triangulation's data was copied to another anchor.
+  template <class Anchor>
+  void attach(const Anchor* tr)
   {
     for(std::size_t v = 0; v < records_.size(); ++v) records_[v].attach_to_triangulation(tr, static_cast<Vertex_id>(v));
     if(!infinite_.empty()) infinite_.front().attach_to_triangulation(tr, ghost_vertex);
@@ -270,8 +272,8 @@ template <class Record>
 class User_cells
 {
 public:
-  template <class Tr>
-  Record& at(const Tr* tr, const Flat_storage& m, Tet_id t) const
+  template <class Anchor>
+  Record& at(const Anchor* tr, const Flat_storage& m, Tet_id t) const
   {
     CGAL_precondition(t < m.number_of_slots() && m.is_live(t));
     if(t >= records_.size()) {
@@ -285,6 +287,30 @@ public:
     }
     records_[t].attach_to_triangulation(tr, t);
     return records_[t];
+  }
+
+  // As Cell_infos::rename and Cell_infos::lift.
+  void rename(const Flat_storage& m, Tet_id t, const Vertex_id* before)
+  {
+    if(t >= records_.size() || !std::equal(before, before + 4, cells_[t].begin())) return;
+    std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, cells_[t].begin());
+  }
+  void lift(const Flat_storage& m, const Lifted_cells& lifted)
+  {
+    std::vector<Record> records;
+    std::vector<std::array<Vertex_id, 4>> cells;
+    records.swap(records_);
+    cells.swap(cells_);
+    for(std::size_t s = 0; s < records.size(); ++s) {
+      const Tet_id t = lifted.find(cells[s].data());
+      if(t == Lifted_cells::none) continue;
+      if(t >= records_.size()) {
+        records_.resize(t + 1);
+        cells_.resize(t + 1, std::array<Vertex_id, 4>{{ghost_vertex, ghost_vertex, ghost_vertex, ghost_vertex}});
+      }
+      records_[t] = std::move(records[s]);
+      std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, cells_[t].begin());
+    }
   }
 
   void clear()
@@ -303,6 +329,8 @@ template <>
 class User_cells<void>
 {
 public:
+  void rename(const Flat_storage&, Tet_id, const Vertex_id*) {}
+  void lift(const Flat_storage&, const Lifted_cells&) {}
   void clear() {}
 };
 
@@ -310,10 +338,10 @@ template <>
 class User_vertices<void>
 {
 public:
-  template <class Tr>
-  void resize(const Tr*, std::size_t) {}
-  template <class Tr>
-  void attach(const Tr*) {}
+  template <class Anchor>
+  void resize(const Anchor*, std::size_t) {}
+  template <class Anchor>
+  void attach(const Anchor*) {}
   void clear() {}
 };
 

@@ -14,6 +14,12 @@
 //                 to Info() when next read.  A Delaunay cell destroyed by an
 //                 insertion never comes back (it is in conflict with the new
 //                 vertex for good), so equal vertex ids mean the same cell.
+//                 Below dimension 3 CGAL also changes some cells in place
+//                 (Lower_dimensional_triangulation::Renamed_cell): their
+//                 infos are re-keyed to the new vertex ids.  When one
+//                 vertex v lifts dimension 2 to 3, CGAL makes each triangle
+//                 (a, b, c) the tetrahedron (a, b, c, v) in place, and the
+//                 Delaunay triangulation has exactly those (Lifted_cells).
 //
 // Without infos (the default data structure) both arrays are empty types
 // and insertion takes the plain path: nothing is paid for them.
@@ -26,6 +32,7 @@
 #include <boost/tuple/tuple.hpp>
 
 #include <algorithm>
+#include <array>
 #include <iterator>
 #include <tuple>
 #include <type_traits>
@@ -47,6 +54,42 @@ template <class Tds, class = void>
 struct Cell_info_of { typedef void type; };
 template <class Tds>
 struct Cell_info_of<Tds, std::void_t<typename Tds::Cell::Info>> { typedef typename Tds::Cell::Info type; };
+
+// After one vertex v lifted dimension 2 to 3: the slot of the tetrahedron
+// (a, b, c, v) of each triangle (a, b, c) of dimension 2.
+class Lifted_cells
+{
+public:
+  static constexpr Tet_id none = Tet_id(-1);
+
+  Lifted_cells(const Flat_storage& m, Vertex_id v) : v_(v)
+  {
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+      if(!m.is_live(t) || std::find(m.vertex_ids(t), m.vertex_ids(t) + 4, v) == m.vertex_ids(t) + 4) continue;
+      Key k;
+      std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, k.begin());
+      std::sort(k.begin(), k.end());
+      cells_.push_back({k, t});
+    }
+    std::sort(cells_.begin(), cells_.end());
+  }
+
+  // `key`: the four ids a triangle's info was kept under (the last one
+  // no_vertex); none for other keys or a triangle that is gone.
+  Tet_id find(const Vertex_id* key) const
+  {
+    if(key[3] != no_vertex) return none;
+    Key k = {key[0], key[1], key[2], v_};
+    std::sort(k.begin(), k.end());
+    const auto it = std::lower_bound(cells_.begin(), cells_.end(), std::make_pair(k, Tet_id(0)));
+    return it != cells_.end() && it->first == k ? it->second : none;
+  }
+
+private:
+  typedef std::array<Vertex_id, 4> Key;
+  Vertex_id v_;
+  std::vector<std::pair<Key, Tet_id>> cells_;
+};
 
 // One info in a vector: a wrapper, so that Info = bool gets real references.
 template <class Info>
@@ -114,6 +157,27 @@ public:
     return e.info;
   }
 
+  // The cell of slot t, which had the vertices `before`, now has those of m.
+  void rename(const Flat_storage& m, Tet_id t, const Vertex_id* before)
+  {
+    if(t >= entries_.size() || !std::equal(before, before + 4, entries_[t].cell)) return;
+    std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, entries_[t].cell);
+  }
+  // The infos of the triangles go to their tetrahedra; the slots were
+  // renumbered by the lift, so every entry moves.
+  void lift(const Flat_storage& m, const Lifted_cells& lifted)
+  {
+    std::vector<Entry> before;
+    before.swap(entries_);
+    for(Entry& e : before) {
+      const Tet_id t = lifted.find(e.cell);
+      if(t == Lifted_cells::none) continue;
+      if(t >= entries_.size()) entries_.resize(t + 1);
+      entries_[t].info = std::move(e.info);
+      std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, entries_[t].cell);
+    }
+  }
+
   void clear() { entries_.clear(); }
 
 private:
@@ -130,6 +194,8 @@ template <>
 class Cell_infos<void>
 {
 public:
+  void rename(const Flat_storage&, Tet_id, const Vertex_id*) {}
+  void lift(const Flat_storage&, const Lifted_cells&) {}
   void clear() {}
 };
 
