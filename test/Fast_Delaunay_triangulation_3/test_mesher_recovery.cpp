@@ -13,10 +13,10 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 
 #include <gtest/gtest.h>
 
+#include "cgal_data_surface.h"
 #include "mesher_shapes.h"
 
 #include <cmath>
@@ -25,6 +25,8 @@
 #include <vector>
 
 namespace {
+
+using mesher_shapes::read_cgal_data_surface;
 
 namespace fm = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
 namespace fi = CGAL::Fast_Delaunay_triangulation_3_internal;
@@ -198,18 +200,6 @@ TEST(BoundaryRecovery, TwoCubesNested)
 {
   const Surface both = mesher_shapes::combine(mesher_shapes::cube(0, 1), mesher_shapes::cube(0.3, 0.6));
   recover_both_ways(both, 1.0);
-}
-
-bool read_cgal_data_surface(const std::string& name, Surface& s)
-{
-  const std::string path = std::string(FDT3_CGAL_DATA_DIR) + "/" + name;
-  if(!std::ifstream(path)) return false;
-  std::vector<K::Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  EXPECT_TRUE(CGAL::IO::read_polygon_soup(path, points, polygons)) << path;
-  for(const auto& p : points) s.points.push_back({p.x(), p.y(), p.z()});
-  for(const auto& p : polygons) s.triangles.push_back({p[0], p[1], p[2]});
-  return true;
 }
 
 // CGAL's fandisk: 1106 of 12946 triangles missing, flat faces on the hull;

@@ -11,11 +11,11 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 
 #include <gtest/gtest.h>
 
 #include "mesher_checks.h"
+#include "cgal_data_surface.h"
 #include "mesher_shapes.h"
 
 #include <algorithm>
@@ -29,6 +29,8 @@
 #include <vector>
 
 namespace {
+
+using mesher_shapes::read_cgal_data_surface;
 
 using namespace mesher_checks;
 
@@ -149,23 +151,6 @@ TEST(Mesher, QualityReportAgreesWithIndependentChecks)
   Mesh broken = mesh;
   broken.triangles.pop_back();
   EXPECT_FALSE(CGAL::Fast_mesher_3::quality_report(broken).boundary_equals_input());
-}
-
-// A surface of CGAL's data, extracted from libcgal-demo's archive by CMake
-// (cmake/Fdt3CgalData.cmake); false when it is not there.
-bool read_cgal_data_surface(const std::string& name, Surface& s)
-{
-  const std::string path = std::string(FDT3_CGAL_DATA_DIR) + "/" + name;
-  if(!std::ifstream(path)) return false;
-  std::vector<K::Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  EXPECT_TRUE(CGAL::IO::read_polygon_soup(path, points, polygons)) << path;
-  for(const auto& p : points) s.points.push_back({p.x(), p.y(), p.z()});
-  for(const auto& p : polygons) {
-    EXPECT_EQ(p.size(), 3u);
-    s.triangles.push_back({p[0], p[1], p[2]});
-  }
-  return true;
 }
 
 // CGAL's elephant: a fine organic surface whose triangles the empty mesh

@@ -65,18 +65,19 @@ inline std::vector<std::size_t> brio_round_targets(std::size_t n)
 
 // How brio_keys lays out a key: bits [0, index_bits) hold the Moore index (hash bits in round 0), the bits above
 // hold the round; key_bits is what the radix sort needs to look at.
+struct Bounding_box
+{
+  double lo[3];
+  double hi[3];
+};
+
 struct Brio_key_layout
 {
   int bits_per_axis = 1;
   int index_bits = 3;
   int key_bits = 3;
   std::size_t rounds = 1;
-};
-
-struct Bounding_box
-{
-  double lo[3];
-  double hi[3];
+  Bounding_box box{}; // the points' box, the Moore grid's (unset for no point)
 };
 
 // Box of n >= 1 points, each chunk reduced separately: min and max are exact, so any chunking gives the same box.
@@ -168,7 +169,8 @@ inline Brio_key_layout brio_keys(const double* xyz, std::size_t n, std::uint64_t
   for(std::size_t k = 0; k < threshold_count; ++k)
     threshold[k] = std::uint64_t(double(targets[k]) / double(n) * 0x1p53);
 
-  const Bounding_box box = bounding_box(xyz, n, num_threads);
+  layout.box = bounding_box(xyz, n, num_threads);
+  const Bounding_box& box = layout.box;
   const Moore_grid grid(box.lo, box.hi, layout.bits_per_axis);
   const Moore_curve curve(layout.bits_per_axis);
   const int index_bits = layout.index_bits;
@@ -193,6 +195,7 @@ struct Brio_order
 {
   std::vector<std::uint32_t> order;      // permutation of [0, n): insertion order
   std::vector<std::size_t> round_end;    // cumulative end of each round in `order`; never empty, back() == n
+  Bounding_box box{};                    // the points' bounding box (n >= 1)
 };
 
 // Buffers reused across calls. After brio_order, items[k] = (key, order[k]) for every k: for k >= round_end[0],
@@ -221,6 +224,7 @@ inline void brio_order(const double* xyz, std::size_t n, std::uint64_t seed, int
       result.order[k] = items[k].value;
   });
 
+  result.box = workspace.layout.box;
   const int index_bits = workspace.layout.index_bits;
   result.round_end.resize(workspace.layout.rounds);
   for(std::size_t r = 0; r < workspace.layout.rounds; ++r)

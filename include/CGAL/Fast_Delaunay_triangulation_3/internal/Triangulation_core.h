@@ -24,7 +24,6 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -147,6 +146,10 @@ public:
     Brio_order order = brio_order(xyz, n, seed, partitions);
     mesh.vertices.resize(first_new + n);
     write_vertex_records(xyz, order.order, first_new);
+    for(int a = 0; a < 3; ++a) {
+      box_lo_[a] = std::min(box_lo_[a], order.box.lo[a]);
+      box_hi_[a] = std::max(box_hi_[a], order.box.hi[a]);
+    }
     if(consumed != nullptr) {
       CGAL_assertion(consumed->data() == xyz);
       std::vector<double>().swap(*consumed);
@@ -349,40 +352,20 @@ private:
   // Grows the bounding box of all vertices (kept incrementally: single-point
   // insertions must not scan the vertices).
   // Vertex records first_new + i = point order[i] of xyz, written (random
-  // reads of the input) on the threads of the partitioned engine, each chunk
-  // with its own bounding box, which then extends the triangulation's.
+  // reads of the input) on the threads of the partitioned engine.
   void write_vertex_records(const double* xyz, const std::vector<std::uint32_t>& order, std::size_t first_new)
   {
     const std::size_t n = order.size();
     const int chunks = chunk_count(n, partitions);
-    std::vector<std::array<double, 6>> boxes(chunks);
     for_each_chunk(chunks, [&](int c) {
-      double lo[3], hi[3];
-      for(int a = 0; a < 3; ++a) {
-        lo[a] = std::numeric_limits<double>::infinity();
-        hi[a] = -std::numeric_limits<double>::infinity();
-      }
       const std::size_t end = chunk_begin(n, chunks, c + 1);
       for(std::size_t i = chunk_begin(n, chunks, c); i < end; ++i) {
         Vertex_record& r = mesh.vertices[first_new + i];
         const double* p = xyz + 3 * std::size_t(order[i]);
-        for(int a = 0; a < 3; ++a) {
-          r.xyz[a] = p[a];
-          lo[a] = std::min(lo[a], p[a]);
-          hi[a] = std::max(hi[a], p[a]);
-        }
+        r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
         r.scratch = 0;
       }
-      for(int a = 0; a < 3; ++a) {
-        boxes[c][a] = lo[a];
-        boxes[c][3 + a] = hi[a];
-      }
     });
-    for(const std::array<double, 6>& b : boxes)
-      for(int a = 0; a < 3; ++a) {
-        box_lo_[a] = std::min(box_lo_[a], b[a]);
-        box_hi_[a] = std::max(box_hi_[a], b[3 + a]);
-      }
   }
 
   void extend_bounding_box(std::size_t first)

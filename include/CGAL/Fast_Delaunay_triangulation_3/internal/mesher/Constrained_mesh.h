@@ -58,10 +58,11 @@ inline Triangle_key facet_key(const Flat_storage& m, Tet_id t, int f)
   return Triangle_key::of(tv[facet_vertex[f][0]], tv[facet_vertex[f][1]], tv[facet_vertex[f][2]]);
 }
 
-// Lookup of mesh facets among a list of triangles, which it lists by their
-// smallest vertex (a vertex starts two triangles on average): a facet is
-// compared with a handful, where a binary search over the whole sorted list
-// cost ~15 unpredictable branches per facet.
+// A list of triangles bucketed by their smallest vertex (a counting sort).
+// Looking a mesh facet up compares it with a handful (a vertex starts two
+// input triangles on average), where a binary search over the whole sorted
+// list cost ~15 unpredictable branches per facet; the buckets also pair up
+// the facets of a set of tetrahedra.
 class Triangles_by_smallest_vertex
 {
 public:
@@ -84,6 +85,10 @@ public:
       if(keys_[index_[j]] == k) return index_[j];
     return none;
   }
+
+  // The positions of the triangles whose smallest vertex is v, in list order.
+  const std::size_t* begin(std::size_t v) const { return index_.data() + first_[v]; }
+  const std::size_t* end(std::size_t v) const { return index_.data() + first_[v + 1]; }
 
 private:
   const std::vector<Triangle_key>& keys_;
@@ -189,39 +194,29 @@ inline Flat_storage flat_storage_from_tetrahedra(const std::vector<std::array<do
   for(std::size_t t = 0; t < tets.size(); ++t)
     for(int i = 0; i < 4; ++i) m.tets[t].v[i] = tets[t][i];
 
-  // Facets bucketed by their smallest vertex (a counting sort), then each
-  // bucket, a few dozen facets, sorted by the other two vertices: the same
-  // order as sorting all 4T facet keys, which took most of this function's
-  // time.  Equal keys are the two sides of a facet; a lone key is a hull facet.
-  std::vector<std::size_t> bucket_begin(points.size() + 1, 0);
+  // Facets bucketed by their smallest vertex, then each bucket, a few dozen
+  // facets, sorted: the same order as sorting all 4T facet keys, which took
+  // most of this function's time.  Equal keys are the two sides of a facet;
+  // a lone key is a hull facet.  Facet f of tetrahedron t is key 4 t + f.
+  std::vector<Triangle_key> keys(4 * tets.size());
   for(Tet_id t = 0; t < tets.size(); ++t)
-    for(int f = 0; f < 4; ++f) ++bucket_begin[facet_key(m, t, f).v[0] + 1];
-  for(std::size_t v = 0; v < points.size(); ++v) bucket_begin[v + 1] += bucket_begin[v];
-  struct Bucketed_facet { Vertex_id b, c; Facet_code code; };
-  std::vector<Bucketed_facet> facets(4 * tets.size());
-  {
-    std::vector<std::size_t> next(bucket_begin.begin(), bucket_begin.end() - 1);
-    for(Tet_id t = 0; t < tets.size(); ++t)
-      for(int f = 0; f < 4; ++f) {
-        const Triangle_key key = facet_key(m, t, f);
-        facets[next[key.v[0]]++] = {key.v[1], key.v[2], facet_code(t, f)};
-      }
-  }
-  auto same_key = [](const Bucketed_facet& x, const Bucketed_facet& y) { return x.b == y.b && x.c == y.c; };
+    for(int f = 0; f < 4; ++f) keys[4 * std::size_t(t) + f] = facet_key(m, t, f);
+  const Triangles_by_smallest_vertex buckets(keys, points.size());
+  auto code_of = [](std::size_t k) { return facet_code(static_cast<Tet_id>(k / 4), static_cast<int>(k % 4)); };
   std::vector<Facet_code> hull;
+  std::vector<std::size_t> bucket;
   for(std::size_t v = 0; v < points.size(); ++v) {
-    const std::size_t end = bucket_begin[v + 1];
-    std::sort(facets.begin() + bucket_begin[v], facets.begin() + end,
-              [](const Bucketed_facet& x, const Bucketed_facet& y) { return x.b != y.b ? x.b < y.b : x.c < y.c; });
-    for(std::size_t k = bucket_begin[v]; k < end;) {
-      if(k + 1 < end && same_key(facets[k], facets[k + 1])) {
-        if(k + 2 < end && same_key(facets[k], facets[k + 2]))
+    bucket.assign(buckets.begin(v), buckets.end(v));
+    std::sort(bucket.begin(), bucket.end(), [&](std::size_t x, std::size_t y) { return keys[x] < keys[y]; });
+    for(std::size_t k = 0; k < bucket.size();) {
+      if(k + 1 < bucket.size() && keys[bucket[k]] == keys[bucket[k + 1]]) {
+        if(k + 2 < bucket.size() && keys[bucket[k]] == keys[bucket[k + 2]])
           throw std::logic_error("Tetrahedral_mesher: a facet shared by three tetrahedra after recovery");
-        m.neighbor_code(facets[k].code) = facets[k + 1].code;
-        m.neighbor_code(facets[k + 1].code) = facets[k].code;
+        m.neighbor_code(code_of(bucket[k])) = code_of(bucket[k + 1]);
+        m.neighbor_code(code_of(bucket[k + 1])) = code_of(bucket[k]);
         k += 2;
       } else {
-        hull.push_back(facets[k].code);
+        hull.push_back(code_of(bucket[k]));
         k += 1;
       }
     }
