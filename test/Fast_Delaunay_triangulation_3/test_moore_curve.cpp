@@ -284,3 +284,30 @@ TEST(MooreGrid, SplitMapsEachSideOntoHalfTheGrid)
     }
   }
 }
+
+// The partitioned insertion reads its coarse keys off BRIO's order (Parallel_insertion.h, sorted runs): the cell of
+// a point at b bits must be its cell at any finer resolution shifted right, on the same box, for points inside,
+// on the faces of and outside the box.
+TEST(MooreGrid, CoarserCellIsPrefixOfFiner)
+{
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(-0.1, 1.1);
+  for(int trial = 0; trial < 20; ++trial) {
+    double lo[3], hi[3];
+    for(int a = 0; a < 3; ++a) {
+      lo[a] = std::ldexp(unit(random) - 0.5, int(random() % 40) - 20);
+      hi[a] = lo[a] + std::ldexp(unit(random) + 0.2, int(random() % 40) - 20);
+    }
+    for(int fine = 2; fine <= Moore_curve::max_bits_per_axis; ++fine) {
+      const int coarse = 1 + int(random() % std::uint64_t(fine - 1));
+      const Moore_grid f(lo, hi, fine), c(lo, hi, coarse);
+      for(int k = 0; k < 200; ++k) {
+        const int axis = int(random() % 3);
+        const double t = k < 3 ? double(k) / 2 : unit(random);
+        const double x = lo[axis] + t * (hi[axis] - lo[axis]);
+        ASSERT_EQ(f.cell(axis, x) >> (fine - coarse), c.cell(axis, x))
+          << "fine " << fine << ", coarse " << coarse << ", axis " << axis << ", t " << t;
+      }
+    }
+  }
+}

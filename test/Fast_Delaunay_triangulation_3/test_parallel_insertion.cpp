@@ -107,6 +107,35 @@ TEST(Parallel_insertion, IntoNonEmptyTriangulation)
   EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
 }
 
+// A second insertion whose points' box holds the first one's vertices takes
+// its partitions from the BRIO order (sorted runs) and keys only the old
+// vertices; one whose box does not keys every vertex.  Both must give CGAL's
+// cells, on the plain curve and on the retries.
+TEST(Parallel_insertion, IntoNonEmptyTriangulationInsideAndAcrossTheNewBox)
+{
+  const std::vector<Point> cube = to_points<Point>(make_points("uniform", 2 * points_per_case, 25));
+  std::vector<Point> small;
+  for(const Point& p : to_points<Point>(make_points("gauss", points_per_case / 3, 26)))
+    small.push_back(Point(0.5 + 0.1 * (p.x() - 0.5), 0.5 + 0.1 * (p.y() - 0.5), 0.5 + 0.1 * (p.z() - 0.5)));
+  for(const bool inside : {true, false}) {
+    std::vector<Point> first = small;
+    if(!inside) first.push_back(Point(1.5, -0.25, 0.5));
+    Fast_dt fast;
+    fast.set_number_of_threads(3);
+    fast.insert(first.begin(), first.end());
+    fast.insert(cube.begin(), cube.end());
+    std::size_t partitioned = 0;
+    for(const auto& r : fast.last_insertion_report().rounds)
+      if(r.partitions > 1) partitioned += r.inserted;
+    EXPECT_GT(partitioned, cube.size() / 2) << (inside ? "inside" : "across");
+    std::vector<Point> all = first;
+    all.insert(all.end(), cube.begin(), cube.end());
+    const Cgal_dt cgal(all.begin(), all.end());
+    ASSERT_TRUE(fast.is_valid(true)) << (inside ? "inside" : "across");
+    EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal)) << (inside ? "inside" : "across");
+  }
+}
+
 #ifdef CGAL_LINKED_WITH_TBB
 // CGAL's parallel idiom, unchanged but for the class name: a Parallel_tag data
 // structure, a lock grid over the bounding box, tbb::global_control.

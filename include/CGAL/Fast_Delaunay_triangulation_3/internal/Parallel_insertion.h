@@ -153,10 +153,13 @@ public:
     while(!points.empty()) {
       while(partitions > 1 && points.size() < min_points_per_partition_ * std::size_t(partitions))
         partitions /= 2;
-      // A retry pays a fixed price proportional to the mesh (the partition of
-      // every mesh vertex is recomputed) and gains at most a share of its few
-      // points' insertion time: past this ratio the sequential finish is faster.
-      if(attempt > 0 && points.size() * retry_mesh_ratio < vertices_in_mesh_) partitions = 1;
+      // A retry pays a fixed price proportional to the vertex keys it computes
+      // (every mesh vertex's, unless sorted runs spare them) and gains at most
+      // a share of its few points' insertion time: past this ratio the
+      // sequential finish is faster.
+      if(attempt > 0 && partitions > 1 &&
+         points.size() * retry_mesh_ratio < keys_to_compute(points, attempt, partitions))
+        partitions = 1;
       Partition_round row;
       row.points = points.size();
       row.partitions = partitions;
@@ -185,6 +188,14 @@ public:
   // being inserted): the partitions of the records above are not computed.
   // The default is every record.
   void set_vertex_end(std::size_t n) { vertex_end_ = n; }
+  // Vertex id ranges [first, second) whose points are in the order of the
+  // plain Moore curve of this engine's grid (BRIO rounds sorted on the same
+  // box, whose finer keys nest the engine's): along such a run the
+  // partition of a vertex, and the cut of points taken from it in order,
+  // follow from a few keys found by binary search, on the plain curve and
+  // on its circular shifts, instead of one key per vertex per attempt.
+  typedef std::pair<Vertex_id, Vertex_id> Vertex_range;
+  void set_sorted_runs(std::vector<Vertex_range> runs) { sorted_runs_ = std::move(runs); }
   void set_min_points_per_partition(std::size_t n) { min_points_per_partition_ = std::max<std::size_t>(n, 1); }
 
 private:
@@ -256,67 +267,236 @@ private:
     return c;
   }
 
+  // Keys of the curve of one attempt, over the engine's grid.
+  struct Attempt_curve
+  {
+    static constexpr int bits = 16;
+    static constexpr std::uint64_t key_mask = (std::uint64_t(1) << (3 * bits)) - 1;
+    Moore_curve curve;
+    Curve_transform transform;
+    Moore_grid grid;
+    Moore_grid plain_grid;
+
+    Attempt_curve(const double lo[3], const double hi[3], const Curve_transform& t)
+        : curve(bits), transform(t), grid(lo, hi, bits, t.split), plain_grid(lo, hi, bits)
+    {}
+    bool shift_only() const
+    {
+      return transform.split[0] == 0.5 && transform.split[1] == 0.5 && transform.split[2] == 0.5;
+    }
+    std::uint64_t key(const double* p) const { return (grid.key(curve, p) + transform.shift) & key_mask; }
+    std::uint64_t plain_key(const double* p) const { return plain_grid.key(curve, p); }
+  };
+
+  // Whether `points` are increasing ids of one sorted run, hence in the
+  // order of the plain curve (the failures of a plain attempt, partition
+  // after partition, stay so).
+  bool in_run_order(const std::vector<Vertex_id>& points) const
+  {
+    if(points.empty()) return false;
+    const auto run = std::find_if(sorted_runs_.begin(), sorted_runs_.end(), [&](const Vertex_range& r) {
+      return r.first <= points.front() && points.front() < r.second;
+    });
+    if(run == sorted_runs_.end() || points.back() >= run->second) return false;
+    for(std::size_t i = 1; i < points.size(); ++i)
+      if(points[i] <= points[i - 1]) return false;
+    return true;
+  }
+
+  // Vertex ids below nv that no sorted run holds: their keys are computed
+  // one by one.
+  std::size_t vertices_outside_runs(std::size_t nv) const
+  {
+    std::size_t inside = 0;
+    for(const Vertex_range& r : sorted_runs_)
+      if(r.first < nv) inside += std::min<std::size_t>(r.second, nv) - r.first;
+    return nv - inside;
+  }
+
+  // Vertex ids that may be in a tetrahedron during an attempt on `points`:
+  // those below vertex_end_ and the points'.  The records above them are
+  // later BRIO rounds, not in the mesh yet.
+  std::size_t mesh_vertex_end(const std::vector<Vertex_id>& points) const
+  {
+    return std::min(m_.vertices.size(), std::max<std::size_t>(vertex_end_, std::size_t(largest_id(points)) + 1));
+  }
+
+  // Vertex keys an attempt computes one by one before its tasks start: the
+  // price of a retry, paid whatever the number of points.
+  std::size_t keys_to_compute(const std::vector<Vertex_id>& points, int attempt, int partitions) const
+  {
+    const Curve_transform t = transform_for(attempt, partitions, 3 * Attempt_curve::bits);
+    const bool shift_only = t.split[0] == 0.5 && t.split[1] == 0.5 && t.split[2] == 0.5;
+    const std::size_t nv = mesh_vertex_end(points);
+    if(shift_only && in_run_order(points)) return vertices_outside_runs(nv);
+    return vertices_in_mesh_;
+  }
+
+  // The points of an attempt in the order of its curve, cut into
+  // `partitions` runs of about equal size at key changes: partition j takes
+  // sorted[cut[j], cut[j + 1]), the keys in [first_key[j], first_key[j + 1]).
+  struct Attempt_cut
+  {
+    std::vector<Vertex_id> sorted;
+    std::vector<std::size_t> cut;
+    std::vector<std::uint64_t> first_key;
+  };
+
+  // Fills cut and first_key of `plan`, given its sorted points and the
+  // attempt key of sorted[i].
+  template <class Key_at>
+  static void cut_sorted(Attempt_cut& plan, int partitions, const Key_at& key_at)
+  {
+    const std::size_t n = plan.sorted.size();
+    plan.cut.assign(partitions + 1, 0);
+    plan.first_key.assign(partitions + 1, 0);
+    for(int j = 1; j < partitions; ++j) {
+      std::size_t c = std::max(plan.cut[j - 1], n * std::size_t(j) / std::size_t(partitions));
+      if(c > 0 && c < n) {
+        std::uint64_t previous = key_at(c - 1), current = key_at(c);
+        while(c < n && current == previous) {
+          if(++c < n) current = key_at(c);
+        }
+        plan.first_key[j] = c < n ? current : Attempt_curve::key_mask + 1;
+      } else {
+        plan.first_key[j] = c < n ? key_at(c) : Attempt_curve::key_mask + 1;
+      }
+      plan.cut[j] = c;
+    }
+    plan.cut[partitions] = n;
+    plan.first_key[partitions] = Attempt_curve::key_mask + 1;
+  }
+
+  // Points in plain curve order: the attempt's curve is the same up to a
+  // circular shift, so its order is a rotation, found by binary search.
+  static Attempt_cut cut_rotated(const Flat_storage& m, const std::vector<Vertex_id>& points, int partitions,
+                                 const Attempt_curve& c)
+  {
+    Attempt_cut plan;
+    const std::uint64_t wrap = (Attempt_curve::key_mask + 1 - c.transform.shift) & Attempt_curve::key_mask;
+    const std::size_t first = c.transform.shift == 0
+                                ? 0
+                                : std::size_t(std::partition_point(points.begin(), points.end(),
+                                                                   [&](Vertex_id v) {
+                                                                     return c.plain_key(m.point(v)) < wrap;
+                                                                   }) -
+                                              points.begin());
+    plan.sorted.resize(points.size());
+    std::rotate_copy(points.begin(), points.begin() + first, points.end(), plan.sorted.begin());
+    CGAL_assertion(std::is_sorted(plan.sorted.begin(), plan.sorted.end(), [&](Vertex_id a, Vertex_id b) {
+      return c.key(m.point(a)) < c.key(m.point(b));
+    }));
+    cut_sorted(plan, partitions, [&](std::size_t i) { return c.key(m.point(plan.sorted[i])); });
+    return plan;
+  }
+
+  // Any points: one key each, radix sorted on the partitions' threads.
+  static Attempt_cut cut_by_sorting(const Flat_storage& m, const std::vector<Vertex_id>& points, int partitions,
+                                    const Attempt_curve& c)
+  {
+    std::vector<Key_value<std::uint32_t>> items(points.size()), scratch_items;
+    const int chunks = chunk_count(points.size(), partitions);
+    for_each_chunk(chunks, [&](int k) {
+      for(std::size_t i = chunk_begin(points.size(), chunks, k); i < chunk_begin(points.size(), chunks, k + 1); ++i)
+        items[i] = {c.key(m.point(points[i])), points[i]};
+    });
+    const bool in_order = std::is_sorted(items.begin(), items.end(),
+                                         [](const Key_value<std::uint32_t>& a, const Key_value<std::uint32_t>& b) {
+                                           return a.key < b.key;
+                                         });
+    if(!in_order) radix_sort(items, scratch_items, 3 * Attempt_curve::bits, partitions);
+    std::vector<Key_value<std::uint32_t>>().swap(scratch_items); // not needed while the mesh grows
+    Attempt_cut plan;
+    // The points alone: a quarter of the keyed items' bytes.
+    plan.sorted.resize(items.size());
+    for(std::size_t i = 0; i < items.size(); ++i) plan.sorted[i] = items[i].value;
+    cut_sorted(plan, partitions, [&](std::size_t i) { return items[i].key; });
+    return plan;
+  }
+
+  // The first id of [begin, end), a sorted run, whose plain key is at
+  // least `key` (end if none).
+  Vertex_id first_id_at_or_past(Vertex_id begin, Vertex_id end, const Attempt_curve& c, std::uint64_t key) const
+  {
+    while(begin < end) {
+      const Vertex_id middle = begin + (end - begin) / 2;
+      if(c.plain_key(m_.point(middle)) < key) begin = middle + 1;
+      else end = middle;
+    }
+    return begin;
+  }
+
+  static std::uint8_t partition_of_key(std::uint64_t k, const std::vector<std::uint64_t>& first_key)
+  {
+    const int partitions = int(first_key.size()) - 1;
+    int j = 0;
+    while(j + 1 < partitions && k >= first_key[j + 1]) ++j;
+    return static_cast<std::uint8_t>(j);
+  }
+
+  // partition_of_vertex_ for the ids below nv.  On a shift-only curve the
+  // partition along a sorted run changes only where the plain key crosses a
+  // cut or the wrap of the shift: a few binary searches and fills.
+  void assign_vertex_partitions(std::size_t nv, int partitions, const Attempt_curve& c,
+                                const std::vector<std::uint64_t>& first_key)
+  {
+    partition_of_vertex_.resize(m_.vertices.size());
+    std::vector<Vertex_range> by_key;
+    std::vector<Vertex_range> computed;
+    if(c.shift_only()) {
+      std::size_t next = 0;
+      for(const Vertex_range& r : sorted_runs_) {
+        if(r.first >= nv) continue;
+        if(r.first > next) computed.push_back({Vertex_id(next), r.first});
+        by_key.push_back({r.first, Vertex_id(std::min<std::size_t>(r.second, nv))});
+        next = std::min<std::size_t>(r.second, nv);
+      }
+      if(next < nv) computed.push_back({Vertex_id(next), Vertex_id(nv)});
+    } else {
+      computed.push_back({0, Vertex_id(nv)});
+    }
+
+    // Plain keys where the attempt's partition may change.
+    std::vector<std::uint64_t> breaks;
+    for(int j = 1; j < partitions; ++j) breaks.push_back((first_key[j] - c.transform.shift) & Attempt_curve::key_mask);
+    if(c.transform.shift != 0) breaks.push_back((Attempt_curve::key_mask + 1 - c.transform.shift) & Attempt_curve::key_mask);
+    std::sort(breaks.begin(), breaks.end());
+    for(const Vertex_range& r : by_key) {
+      Vertex_id begin = r.first;
+      for(std::size_t b = 0; b <= breaks.size() && begin < r.second; ++b) {
+        const Vertex_id end = b == breaks.size() ? r.second
+                                                 : first_id_at_or_past(begin, r.second, c, breaks[b]);
+        if(end > begin) {
+          const std::uint8_t j = partition_of_key(c.key(m_.point(begin)), first_key);
+          std::fill(partition_of_vertex_.begin() + begin, partition_of_vertex_.begin() + end, j);
+          CGAL_assertion(partition_of_key(c.key(m_.point(end - 1)), first_key) == j);
+        }
+        begin = end;
+      }
+    }
+
+    for(const Vertex_range& r : computed) {
+      const std::size_t n = r.second - r.first;
+      const int chunks = chunk_count(n, partitions);
+      for_each_chunk(chunks, [&](int k) {
+        const std::size_t end = r.first + chunk_begin(n, chunks, k + 1);
+        for(std::size_t v = r.first + chunk_begin(n, chunks, k); v < end; ++v)
+          partition_of_vertex_[v] = partition_of_key(c.key(m_.point(Vertex_id(v))), first_key);
+      });
+    }
+  }
+
   template <class Policy>
   void insert_partitioned(const std::vector<Vertex_id>& points, int partitions, int attempt,
                           Vertex_id first_new, std::vector<Vertex_id>& duplicate_of,
                           std::vector<Vertex_id>& failed, Kernel_statistics& stats, Policy& policy)
   {
-    // Keys of the points to insert, sorted; cut into equal runs at key changes.
-    const int bits = 16;
-    const Moore_curve curve(bits);
-    const Curve_transform transform = transform_for(attempt, partitions, 3 * bits);
-    const Moore_grid grid(lo_, hi_, bits, transform.split);
-    const std::uint64_t key_mask = (std::uint64_t(1) << (3 * bits)) - 1;
-    auto key_of = [&](Vertex_id v) { return (grid.key(curve, m_.point(v)) + transform.shift) & key_mask; };
-
-    std::vector<Key_value<std::uint32_t>> items(points.size()), scratch_items;
-    const int chunks = chunk_count(points.size(), partitions);
-    for_each_chunk(chunks, [&](int c) {
-      for(std::size_t i = chunk_begin(points.size(), chunks, c); i < chunk_begin(points.size(), chunks, c + 1); ++i)
-        items[i] = {key_of(points[i]), points[i]};
-    });
-    // A BRIO round arrives in the order of a finer Moore curve on the same
-    // box, whose keys nest the untransformed ones: then it is sorted already.
-    const bool in_order = std::is_sorted(items.begin(), items.end(),
-                                       [](const Key_value<std::uint32_t>& a, const Key_value<std::uint32_t>& b) {
-                                         return a.key < b.key;
-                                       });
-    if(!in_order) radix_sort(items, scratch_items, 3 * bits, partitions);
-    std::vector<Key_value<std::uint32_t>>().swap(scratch_items); // not needed while the mesh grows
-
-    // Partition j holds keys in [first_key[j], first_key[j + 1]).
-    std::vector<std::size_t> cut(partitions + 1);
-    std::vector<std::uint64_t> first_key(partitions + 1);
-    cut[0] = 0;
-    first_key[0] = 0;
-    for(int j = 1; j < partitions; ++j) {
-      std::size_t c = std::max(cut[j - 1], points.size() * std::size_t(j) / std::size_t(partitions));
-      while(c > 0 && c < items.size() && items[c].key == items[c - 1].key) ++c;
-      cut[j] = c;
-      first_key[j] = c < items.size() ? items[c].key : key_mask + 1;
-    }
-    cut[partitions] = items.size();
-    first_key[partitions] = key_mask + 1;
-    // The points alone, in curve order: a quarter of the keyed items' bytes.
-    std::vector<Vertex_id> sorted(items.size());
-    for(std::size_t i = 0; i < items.size(); ++i) sorted[i] = items[i].value;
-    std::vector<Key_value<std::uint32_t>>().swap(items);
-
-    // The partition of every vertex that may be in a tetrahedron: the ids
-    // below vertex_end_ and those of the points.  The records above them are
-    // later BRIO rounds, not in the mesh yet.
-    const std::size_t nv = std::min(m_.vertices.size(),
-                                    std::max<std::size_t>(vertex_end_, std::size_t(largest_id(points)) + 1));
-    partition_of_vertex_.resize(m_.vertices.size());
-    const int vertex_chunks = chunk_count(nv, partitions);
-    for_each_chunk(vertex_chunks, [&](int c) {
-      for(std::size_t v = chunk_begin(nv, vertex_chunks, c); v < chunk_begin(nv, vertex_chunks, c + 1); ++v) {
-        const std::uint64_t k = key_of(static_cast<Vertex_id>(v));
-        int j = 0;
-        while(j + 1 < partitions && k >= first_key[j + 1]) ++j;
-        partition_of_vertex_[v] = static_cast<std::uint8_t>(j);
-      }
-    });
+    const Attempt_curve curve(lo_, hi_, transform_for(attempt, partitions, 3 * Attempt_curve::bits));
+    Attempt_cut plan = curve.shift_only() && in_run_order(points) ? cut_rotated(m_, points, partitions, curve)
+                                                                   : cut_by_sorting(m_, points, partitions, curve);
+    const std::vector<Vertex_id>& sorted = plan.sorted;
+    const std::vector<std::size_t>& cut = plan.cut;
+    assign_vertex_partitions(mesh_vertex_end(points), partitions, curve, plan.first_key);
 
     // Room for every partition's worst case, fixed before the tasks start.
     std::vector<Tet_id> fresh_begin(partitions + 1);
@@ -414,6 +594,7 @@ private:
   std::size_t vertex_end_ = std::numeric_limits<std::size_t>::max();
   std::size_t min_points_per_partition_ = default_min_points_per_partition;
   std::vector<std::uint8_t> partition_of_vertex_;
+  std::vector<Vertex_range> sorted_runs_;
 };
 
 } // namespace Fast_Delaunay_triangulation_3_internal

@@ -146,9 +146,11 @@ public:
     Brio_order order = brio_order(xyz, n, seed, partitions);
     mesh.vertices.resize(first_new + n);
     write_vertex_records(xyz, order.order, first_new);
+    bool rounds_in_curve_order = true;
     for(int a = 0; a < 3; ++a) {
       box_lo_[a] = std::min(box_lo_[a], order.box.lo[a]);
       box_hi_[a] = std::max(box_hi_[a], order.box.hi[a]);
+      rounds_in_curve_order = rounds_in_curve_order && box_lo_[a] == order.box.lo[a] && box_hi_[a] == order.box.hi[a];
     }
     if(consumed != nullptr) {
       CGAL_assertion(consumed->data() == xyz);
@@ -165,9 +167,9 @@ public:
     std::size_t added = 0;
     if(dimension == 3) {
       mesh.reserve_tets(expected_tets(n));
-      insert_new_vertices(first_new, order.round_end, duplicate_of, nullptr);
+      insert_new_vertices(first_new, order.round_end, rounds_in_curve_order, duplicate_of, nullptr);
     } else if(extend_affine_hull(first_new, hull_simplex(simplex), simplex) == 3) {
-      lift_to_dimension_3(first_new, order.round_end, duplicate_of);
+      lift_to_dimension_3(first_new, order.round_end, rounds_in_curve_order, duplicate_of);
     } else {
       // Duplicates are found by CGAL's insertion, which writes final ids.
       added = insert_below_dimension_3(first_new, duplicate_of);
@@ -386,9 +388,11 @@ private:
 
   // The new vertices [first_new, end) in their BRIO rounds: sequentially, or
   // round by round with the partitioned engine (the first round always
-  // sequential, paper §3.4).
+  // sequential, paper §3.4).  rounds_in_curve_order: BRIO sorted the rounds
+  // after the first on the grid of box_lo_, box_hi_ (the new points' box
+  // holds the old vertices).
   void insert_new_vertices(Vertex_id first_new, const std::vector<std::size_t>& round_end,
-                           std::vector<Vertex_id>& duplicate_of, const Vertex_id* skip)
+                           bool rounds_in_curve_order, std::vector<Vertex_id>& duplicate_of, const Vertex_id* skip)
   {
     const Vertex_id end = static_cast<Vertex_id>(number_of_vertices());
     if(partitions <= 1) {
@@ -400,6 +404,12 @@ private:
                                  Sub_determinant_filter::for_box(box_lo_, box_hi_), box_lo_, box_hi_,
                                  seed, timed);
     engine.set_vertices_in_mesh(first_new);
+    if(rounds_in_curve_order) {
+      std::vector<Partitioned_insertion::Vertex_range> runs;
+      for(std::size_t r = 1; r < round_end.size(); ++r)
+        runs.push_back({Vertex_id(first_new + round_end[r - 1]), Vertex_id(first_new + round_end[r])});
+      engine.set_sorted_runs(std::move(runs));
+    }
     // The vertices of the mesh: the old ones, the earlier rounds' and the
     // initial simplex's (which may come from any round).
     std::size_t simplex_end = 0;
@@ -421,7 +431,7 @@ private:
   // triangulation is dropped and the tetrahedra of all vertices are built
   // from the first four affinely independent ones (in the order of the ids).
   void lift_to_dimension_3(Vertex_id first_new, const std::vector<std::size_t>& round_end,
-                           std::vector<Vertex_id>& duplicate_of)
+                           bool rounds_in_curve_order, std::vector<Vertex_id>& duplicate_of)
   {
     const Clock::time_point t0 = Clock::now();
     Vertex_id simplex[4];
@@ -434,7 +444,7 @@ private:
     last_report.init_seconds = seconds(t0, Clock::now());
     mesh.reserve_tets(expected_tets(number_of_vertices()));
     insert_range(0, first_new, first_new, duplicate_of, simplex);
-    insert_new_vertices(first_new, round_end, duplicate_of, simplex);
+    insert_new_vertices(first_new, round_end, rounds_in_curve_order, duplicate_of, simplex);
   }
 
   // The new vertices [first_new, end), which keep the points in less than
