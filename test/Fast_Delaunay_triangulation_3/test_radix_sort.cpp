@@ -160,3 +160,32 @@ TEST(RadixSort, OtherValueTypes)
     ASSERT_EQ(items[i].value.tag, expected[i].value.tag);
   }
 }
+
+// Large arrays are sorted top digit first, then bucket by bucket only as deep as the keys differ: clustered keys
+// (long shared prefixes, one huge bucket, runs of equal keys, buckets just above and below the insertion-sort size)
+// must still come out as the stable sort's, on any number of threads.
+TEST(RadixSort, ClusteredKeysTopDigitFirst)
+{
+  std::mt19937_64 random(5);
+  for(int key_bits : {12, 40, 63, 64}) {
+    const std::uint64_t mask = low_bits_mask(key_bits);
+    std::vector<Item> input(150001);
+    for(std::size_t i = 0; i < input.size(); ++i) {
+      std::uint64_t key;
+      switch(i % 5) {
+      case 0: key = random(); break;                                 // spread over every bucket
+      case 1: key = 0x5a5a5a5a5a5a5a5aull ^ (random() & 0xfff); break; // one cluster sharing all but 12 bits
+      case 2: key = 0x5a5a5a5a5a5a5a5aull ^ (random() & 0x3); break;   // runs of equal keys inside it
+      case 3: key = (i / 97) << 20; break;                             // buckets of ~20 to ~100 items
+      default: key = ~std::uint64_t(0) - (random() & 0xffff); break;    // the top bucket
+      }
+      input[i] = {key & mask, std::uint32_t(i)};
+    }
+    const std::vector<Item> expected = stable_sorted(input);
+    for(int threads : {1, 2, 3}) {
+      std::vector<Item> items = input, scratch;
+      radix_sort(items, scratch, key_bits, threads);
+      ASSERT_TRUE(same_items(expected, items)) << "key_bits " << key_bits << ", threads " << threads;
+    }
+  }
+}

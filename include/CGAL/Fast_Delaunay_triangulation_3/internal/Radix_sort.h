@@ -1,4 +1,6 @@
-// Stable LSD radix sort of (64-bit key, value) pairs, sequential or split over threads.
+// Stable radix sort of (64-bit key, value) pairs, sequential or split over threads: least significant digit first
+// while the array fits in cache, most significant digit first beyond (measured at 1e7 BRIO keys of 63 bits, 2
+// threads: 343 ms LSD, 210 ms MSD; 1e6: 18.7 ms, 13.7 ms).
 //
 // Paper §2.3 ("Fast spatial sorting"): Moore indices are short bounded integers, so sorting digit by digit costs
 // O(key bits x n) and beats comparison sorts; the keys here carry ~30 significant bits for 1e6 points instead of
@@ -188,6 +190,117 @@ void sort_chunked(std::vector<Key_value<Value>>& items, std::vector<Key_value<Va
     items.swap(scratch);
 }
 
+// Most significant digit first, for arrays far larger than the caches: one pass over the whole array splits it
+// by the top digit into buckets that fit in cache, and each bucket is sorted there on its own, digit after digit,
+// only as deep as its keys differ (buckets of a few dozen items end in an insertion sort). LSD would stream the
+// whole array through memory once per digit: 6 times for BRIO's 63-bit keys. Stable like LSD (each scatter keeps
+// the order of equal digits, the insertion sort never passes an equal key), hence the same result item for item.
+constexpr int top_digit_bits = 11;
+constexpr std::size_t msd_min_items = std::size_t(1) << 16;
+
+// Digit width for a bucket of n items: about n / 4 buckets, between 4 and 11 bits.
+inline int msd_digit_bits(std::size_t n, int remaining_bits)
+{
+  int bits = 4;
+  while(bits < wide_digit_bits && (std::size_t(4) << bits) < n)
+    ++bits;
+  return std::min(bits, remaining_bits);
+}
+
+// Sorts the n items of a bucket by the low `shift` bits of their keys (the bits above are equal). The items are in
+// `in_a ? a : b`; the result goes to a. a and b are the same range of the two buffers.
+template <class Value>
+void msd_sort_bucket(Key_value<Value>* a, Key_value<Value>* b, std::size_t n, int shift, bool in_a)
+{
+  Key_value<Value>* source = in_a ? a : b;
+  Key_value<Value>* target = in_a ? b : a;
+  while(true) {
+    if(n <= insertion_sort_limit || shift == 0) {
+      for(std::size_t i = 1; i < n; ++i) {
+        const Key_value<Value> item = source[i];
+        std::size_t j = i;
+        for(; j > 0 && item.key < source[j - 1].key; --j)
+          source[j] = source[j - 1];
+        source[j] = item;
+      }
+      if(source != a)
+        std::copy(source, source + n, a);
+      return;
+    }
+    const int bits = msd_digit_bits(n, shift);
+    shift -= bits;
+    const std::uint64_t mask = (std::uint64_t(1) << bits) - 1;
+    std::uint32_t count[std::size_t(1) << wide_digit_bits];
+    const std::size_t buckets = std::size_t(1) << bits;
+    std::fill(count, count + buckets, 0u);
+    for(std::size_t i = 0; i < n; ++i)
+      ++count[(source[i].key >> shift) & mask];
+    // One digit for all: nothing to move, look at the next one.
+    if(count[(source[0].key >> shift) & mask] == n)
+      continue;
+    std::uint32_t offset[std::size_t(1) << wide_digit_bits];
+    std::uint32_t sum = 0;
+    for(std::size_t d = 0; d < buckets; ++d) {
+      offset[d] = sum;
+      sum += count[d];
+    }
+    for(std::size_t i = 0; i < n; ++i)
+      target[offset[(source[i].key >> shift) & mask]++] = source[i];
+    const bool target_is_a = target == a;
+    std::size_t begin = 0;
+    for(std::size_t d = 0; d < buckets; ++d) {
+      if(count[d] > 0)
+        msd_sort_bucket(a + begin, b + begin, count[d], shift, target_is_a);
+      begin += count[d];
+    }
+    return;
+  }
+}
+
+// The top digit over contiguous chunks (histograms and scatter as in sort_chunked), then the buckets in groups of
+// about equal size, one group per chunk.
+template <class Value>
+void sort_msd(std::vector<Key_value<Value>>& items, std::vector<Key_value<Value>>& scratch, int key_bits, int chunks)
+{
+  const std::size_t n = items.size();
+  const int bits = std::min(top_digit_bits, key_bits);
+  const int shift = key_bits - bits;
+  const std::size_t buckets = std::size_t(1) << bits;
+  const std::uint64_t mask = buckets - 1;
+  std::vector<std::size_t> count(std::size_t(chunks) * buckets);
+  const Key_value<Value>* source = items.data();
+  Key_value<Value>* target = scratch.data();
+  for_each_chunk(chunks, [&](int c) {
+    std::size_t* histogram = &count[std::size_t(c) * buckets];
+    const std::size_t end = chunk_begin(n, chunks, c + 1);
+    for(std::size_t i = chunk_begin(n, chunks, c); i < end; ++i)
+      ++histogram[(source[i].key >> shift) & mask];
+  });
+  std::vector<std::size_t> bucket_begin(buckets + 1);
+  std::size_t sum = 0;
+  for(std::size_t d = 0; d < buckets; ++d) {
+    bucket_begin[d] = sum;
+    for(int c = 0; c < chunks; ++c)
+      sum += std::exchange(count[std::size_t(c) * buckets + d], sum);
+  }
+  bucket_begin[buckets] = n;
+  for_each_chunk(chunks, [&](int c) {
+    std::size_t* offset = &count[std::size_t(c) * buckets];
+    const std::size_t end = chunk_begin(n, chunks, c + 1);
+    for(std::size_t i = chunk_begin(n, chunks, c); i < end; ++i)
+      target[offset[(source[i].key >> shift) & mask]++] = source[i];
+  });
+  // Group c: the buckets that start in [c n / chunks, (c + 1) n / chunks).
+  for_each_chunk(chunks, [&](int c) {
+    const std::size_t from = chunk_begin(n, chunks, c), to = chunk_begin(n, chunks, c + 1);
+    for(std::size_t d = 0; d < buckets; ++d) {
+      const std::size_t begin = bucket_begin[d], size = bucket_begin[d + 1] - begin;
+      if(size > 0 && begin >= from && begin < to)
+        msd_sort_bucket(items.data() + begin, scratch.data() + begin, size, shift, false);
+    }
+  });
+}
+
 } // namespace radix_detail
 
 // Stable sort of `items` by key, ascending. Only the low `key_bits` bits of the keys may be non-zero. `scratch` is
@@ -211,6 +324,10 @@ void radix_sort(std::vector<Key_value<Value>>& items, std::vector<Key_value<Valu
     return;
   scratch.resize(n);
   const int chunks = chunk_count(n, num_threads);
+  if(n >= radix_detail::msd_min_items && key_bits > radix_detail::top_digit_bits) {
+    radix_detail::sort_msd(items, scratch, key_bits, chunks);
+    return;
+  }
   const bool in_cache = 2 * n * sizeof(Key_value<Value>) <= radix_detail::in_cache_bytes;
   const int max_bits = chunks > 1 || in_cache ? radix_detail::wide_digit_bits : radix_detail::narrow_digit_bits;
   const radix_detail::Digit_plan plan = radix_detail::plan_digits(key_bits, max_bits);
