@@ -45,6 +45,11 @@
 #include <utility>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 
@@ -148,6 +153,26 @@ public:
     data_[size_ - 1] = value;
   }
   void clear() { size_ = 0; }
+  // Maps the whole pages of elements [begin, end) (within the capacity) in
+  // one system call, before they are first written (Linux 5.14+; elsewhere,
+  // or if the call fails, the first writes fault the pages in as usual).
+  // The contents do not change.  Threads that fault pages of one process in
+  // concurrently contend in the kernel: the partitioned insertion maps each
+  // partition's slots this way (1e6 points, 2 threads: 1.03 -> 0.99 s; 1e7:
+  // 10.9 -> 10.1 s); a single thread gains nothing.
+  void prefault(std::size_t begin, std::size_t end)
+  {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    CGAL_precondition(begin <= end && end <= capacity_);
+    const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(data_ + begin) + page - 1) / page * page;
+    const std::uintptr_t last = reinterpret_cast<std::uintptr_t>(data_ + end) / page * page;
+    if(first < last) (void)madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE);
+#else
+    (void)begin;
+    (void)end;
+#endif
+  }
   void shrink_to_fit()
   {
     if(size_ == capacity_) return;

@@ -524,6 +524,7 @@ private:
       typename Policy::template Kernel<Partition_ownership, Partition_slots> kernel(
           m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1]}, filter_,
           sub_filter_, ownership);
+      m_.tets.prefault(fresh_begin[j], fresh_begin[j + 1]);
       Tet_id hint = hints[j];
       insert_run(policy, kernel, j, sorted.data() + cut[j], sorted.data() + cut[j + 1], first_new, duplicate_of,
                  hint, failures[j]);
