@@ -14,10 +14,14 @@
 // number of partitions halves when fewer than 1/5 of the attempts succeed or
 // fewer than `min_points_per_partition` points per partition remain, down to
 // a sequential finish (§3.4).  The first BRIO round is always sequential.
+// Vertices that BRIO sorted on the engine's grid get their partition from
+// that order (a few binary searches per attempt on the plain curve and its
+// shifts) rather than from one Moore key each per attempt.
 //
 // Memory (§3.6): before an attempt the arrays get room for every partition's
 // worst case, and each partition takes fresh slots from its own fixed range,
-// so no array moves while tasks run and the slots a partition uses do not
+// so no array moves while tasks run (each partition maps the pages of its
+// range in one system call first) and the slots a partition uses do not
 // depend on scheduling: the result is the same cell for cell for the same
 // input, seed and partition count, whatever the thread count.  Tasks run in
 // the caller's TBB arena, so tbb::global_control and tbb::task_arena limit
@@ -244,6 +248,9 @@ private:
   {
     double split[3] = {0.5, 0.5, 0.5};
     std::uint64_t shift = 0;
+
+    // The plain curve's grid, possibly shifted along the curve.
+    bool shift_only() const { return split[0] == 0.5 && split[1] == 0.5 && split[2] == 0.5; }
   };
 
   // With 2 partitions the first retry shifts the plain curve by a quarter:
@@ -280,10 +287,7 @@ private:
     Attempt_curve(const double lo[3], const double hi[3], const Curve_transform& t)
         : curve(bits), transform(t), grid(lo, hi, bits, t.split), plain_grid(lo, hi, bits)
     {}
-    bool shift_only() const
-    {
-      return transform.split[0] == 0.5 && transform.split[1] == 0.5 && transform.split[2] == 0.5;
-    }
+    bool shift_only() const { return transform.shift_only(); }
     std::uint64_t key(const double* p) const { return (grid.key(curve, p) + transform.shift) & key_mask; }
     std::uint64_t plain_key(const double* p) const { return plain_grid.key(curve, p); }
   };
@@ -325,10 +329,8 @@ private:
   // price of a retry, paid whatever the number of points.
   std::size_t keys_to_compute(const std::vector<Vertex_id>& points, int attempt, int partitions) const
   {
-    const Curve_transform t = transform_for(attempt, partitions, 3 * Attempt_curve::bits);
-    const bool shift_only = t.split[0] == 0.5 && t.split[1] == 0.5 && t.split[2] == 0.5;
-    const std::size_t nv = mesh_vertex_end(points);
-    if(shift_only && in_run_order(points)) return vertices_outside_runs(nv);
+    if(transform_for(attempt, partitions, 3 * Attempt_curve::bits).shift_only() && in_run_order(points))
+      return vertices_outside_runs(mesh_vertex_end(points));
     return vertices_in_mesh_;
   }
 
@@ -491,12 +493,12 @@ private:
                           Vertex_id first_new, std::vector<Vertex_id>& duplicate_of,
                           std::vector<Vertex_id>& failed, Kernel_statistics& stats, Policy& policy)
   {
-    const Attempt_curve curve(lo_, hi_, transform_for(attempt, partitions, 3 * Attempt_curve::bits));
-    Attempt_cut plan = curve.shift_only() && in_run_order(points) ? cut_rotated(m_, points, partitions, curve)
-                                                                   : cut_by_sorting(m_, points, partitions, curve);
+    const Attempt_curve keys(lo_, hi_, transform_for(attempt, partitions, 3 * Attempt_curve::bits));
+    Attempt_cut plan = keys.shift_only() && in_run_order(points) ? cut_rotated(m_, points, partitions, keys)
+                                                                  : cut_by_sorting(m_, points, partitions, keys);
     const std::vector<Vertex_id>& sorted = plan.sorted;
     const std::vector<std::size_t>& cut = plan.cut;
-    assign_vertex_partitions(mesh_vertex_end(points), partitions, curve, plan.first_key);
+    assign_vertex_partitions(mesh_vertex_end(points), partitions, keys, plan.first_key);
 
     // Room for every partition's worst case, fixed before the tasks start.
     std::vector<Tet_id> fresh_begin(partitions + 1);
