@@ -84,14 +84,17 @@ public:
     return nudged(d);
   }
 
-  // A point of the sphere of centre c and radius r, rounded, then nudged.
-  Coordinates near_sphere(const Coordinates& c, double r)
+  // A point of the sphere of centre c and radius r, rounded.
+  Coordinates on_sphere(const Coordinates& c, double r)
   {
     std::normal_distribution<double> g;
     double x, y, z, n;
     do { x = g(rng_); y = g(rng_); z = g(rng_); n = std::sqrt(x * x + y * y + z * z); } while(n < 1e-3);
-    return nudged({c[0] + r * x / n, c[1] + r * y / n, c[2] + r * z / n});
+    return {c[0] + r * x / n, c[1] + r * y / n, c[2] + r * z / n};
   }
+
+  // The same, then nudged.
+  Coordinates near_sphere(const Coordinates& c, double r) { return nudged(on_sphere(c, r)); }
 
   template <class T>
   void shuffle(std::vector<T>& v)
@@ -594,6 +597,66 @@ TEST(Filter_bounds, ConstantsCoverTheirDerivation)
   EXPECT_GE(static_cast<long double>(P::Filter_bounds::in_sphere), in_sphere);
   EXPECT_LT(static_cast<long double>(P::Filter_bounds::orientation) / orientation - 1, 1e-4L);
   EXPECT_LT(static_cast<long double>(P::Filter_bounds::in_sphere) / in_sphere - 1, 1e-4L);
+}
+
+// The double-double stage, alone: never a sign other than the exact one, 0 on
+// exactly cospherical points, and decisive on points rounded onto a sphere
+// (the input it is there for) at every scale of its range.
+TEST(Side_of_oriented_sphere, DoubleDoubleStageCertifiesExactSigns)
+{
+  const auto dd_sign = [](const std::array<Coordinates, 5>& p) {
+    const double* const others[4] = {p[0].data(), p[1].data(), p[2].data(), p[3].data()};
+    double m[3];
+    P::max_differences(p[4].data(), others, m);
+    const double bound = 2 * P::Filter_bounds::in_sphere_double_double * (m[0] * m[1] * m[2]) *
+                         (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    // Shewchuk's sign: the opposite of CGAL's.
+    return -P::in_sphere_determinant_sign_double_double(p[0].data(), p[1].data(), p[2].data(), p[3].data(),
+                                                        p[4].data(), bound);
+  };
+  Generator g(12);
+  for(const Frame& f : std::vector<Frame>{{1, 0}, {1e-25, 0}, {1e25, 0}, {1, 1e6}, {1e-3, 1e8}}) {
+    SCOPED_TRACE(describe(f));
+    std::size_t decided = 0, cases = 0;
+    for(int i = 0; i < 3000; ++i) {
+      std::array<Coordinates, 5> p;
+      const Coordinates centre = g.point(f.scale, f.offset);
+      const double radius = f.scale * g.uniform(0.1, 1);
+      for(Coordinates& q : p) q = i % 2 == 0 ? g.on_sphere(centre, radius) : g.near_sphere(centre, radius);
+      const int expected = cgal_side_of_oriented_sphere(p[0], p[1], p[2], p[3], p[4]);
+      const int sign = dd_sign(p);
+      ASSERT_TRUE(sign == 0 || sign == expected) << "case " << i << ": " << sign << " instead of " << expected;
+      ++cases;
+      if(sign != 0) ++decided;
+    }
+    if(f.offset == 0) {
+      EXPECT_GT(decided, cases * 99 / 100) << decided << " of " << cases;
+    }
+  }
+  const std::vector<Xyz> sphere = integer_sphere_points(101);
+  for(int i = 0; i < 2000; ++i) {
+    std::array<Coordinates, 5> p;
+    for(Coordinates& q : p) {
+      const Xyz& s = sphere[static_cast<std::size_t>(g.integer(0, int(sphere.size()) - 1))];
+      q = {s.x, s.y, s.z};
+    }
+    if(cgal_side_of_oriented_sphere(p[0], p[1], p[2], p[3], p[4]) == 0) {
+      ASSERT_EQ(dd_sign(p), 0) << "cospherical case " << i;
+    }
+  }
+}
+
+TEST(Filter_bounds, DoubleDoubleConstantCoversItsDerivation)
+{
+  // 16 operations deep at most, 5 eps^2 each, four times over, times the
+  // permanent's 4 * 6.
+  const long double eps = std::ldexp(1.0L, -53);
+  const long double bound = 4 * 16 * 5 * eps * eps * 24;
+  EXPECT_GE(static_cast<long double>(P::Filter_bounds::in_sphere_double_double), bound);
+  EXPECT_LT(static_cast<long double>(P::Filter_bounds::in_sphere_double_double) / bound - 1, 1e-3L);
+  // Within the range the bound stays far above underflow.
+  const double lo = P::Filter_bounds::in_sphere_double_double_min;
+  EXPECT_GT(P::Filter_bounds::in_sphere_double_double * lo * lo * lo * (lo * lo), 1e-200);
 }
 
 TEST(Filter_bounds, LimitsKeepTheBoundsInNormalRange)

@@ -21,7 +21,7 @@
 // Memory (§3.6): before an attempt the arrays get room for every partition's
 // worst case, and each partition takes fresh slots from its own fixed range,
 // so no array moves while tasks run (each partition maps the pages of its
-// range in one system call first) and the slots a partition uses do not
+// range a step ahead of their use) and the slots a partition uses do not
 // depend on scheduling: the result is the same cell for cell for the same
 // input, seed and partition count, whatever the thread count.  Tasks run in
 // the caller's TBB arena, so tbb::global_control and tbb::task_arena limit
@@ -60,11 +60,20 @@ struct Partition_round
 };
 
 // Fresh tetrahedron slots of one partition: its own free list first, then a
-// fixed range of new slots reserved for it before the tasks start.
+// fixed range of new slots reserved for it before the tasks start.  The
+// pages of the range are mapped a step ahead of their first use, in one
+// system call per step (Raw_array::prefault): concurrent page faults of two
+// threads contend in the kernel, and mapping the whole range at once would
+// make the slack reserved for a worst case resident (points on a sphere use
+// 3 of the 7 slots per point).
 struct Partition_slots
 {
+  static constexpr Tet_id map_step = Tet_id(1) << 16;
+
   std::vector<Tet_id>* free;
   Tet_id next_fresh, end_fresh;
+  Raw_array<Tet_record>* tets = nullptr; // null: no mapping ahead
+  Tet_id mapped_end = 0;
 
   bool reserve(std::size_t n) const
   {
@@ -78,7 +87,13 @@ struct Partition_slots
       return t;
     }
     CGAL_assertion(next_fresh < end_fresh);
+    if(next_fresh >= mapped_end) map_ahead();
     return next_fresh++;
+  }
+  void map_ahead()
+  {
+    mapped_end = std::min<Tet_id>(end_fresh, next_fresh + map_step);
+    if(tets != nullptr) tets->prefault(next_fresh, mapped_end);
   }
   void give(Tet_id t) { free->push_back(t); }
 };
@@ -524,9 +539,8 @@ private:
       ownership.partition_of_vertex = partition_of_vertex_.data();
       ownership.partition = static_cast<std::uint8_t>(j);
       typename Policy::template Kernel<Partition_ownership, Partition_slots> kernel(
-          m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1]}, filter_,
+          m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1], &m_.tets}, filter_,
           sub_filter_, ownership);
-      m_.tets.prefault(fresh_begin[j], fresh_begin[j + 1]);
       Tet_id hint = hints[j];
       insert_run(policy, kernel, j, sorted.data() + cut[j], sorted.data() + cut[j + 1], first_new, duplicate_of,
                  hint, failures[j]);

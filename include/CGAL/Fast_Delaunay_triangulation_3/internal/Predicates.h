@@ -55,6 +55,15 @@ struct Filter_bounds
   // above is no longer valid: the exact stage decides.
   static constexpr double orientation_min = 1e-97, orientation_max = 1e102;
   static constexpr double in_sphere_min = 1e-58, in_sphere_max = 1e61;
+  // The double-double stage of side_of_oriented_sphere: the same analysis
+  // with exact differences and a unit roundoff of 5 eps^2 per operation
+  // (Joldes, Muller, Popescu 2017: at most 4 eps^2 for a product, 3 eps^2 /
+  // (1 - 4 eps) for a sum of two double-words), c = 16 * 5 eps^2 = 80 eps^2,
+  // taken four times: 320 eps^2 * 24 = 9.4663e-29 (rounded up).  Within its
+  // range every coordinate difference that matters is far from underflow and
+  // the few that underflow add far less than the bound.
+  static constexpr double in_sphere_double_double = 9.467e-29;
+  static constexpr double in_sphere_double_double_min = 1e-30, in_sphere_double_double_max = 1e30;
 };
 
 namespace predicates_detail {
@@ -297,6 +306,109 @@ struct Bit_span
   }
 };
 
+// Double-double arithmetic for the stage between the per-call bound and
+// CGAL's exact numbers: a value is hi + lo with |lo| <= ulp(hi) / 2.  Points
+// on a sphere make nearly every in-sphere test fall through the double
+// stages (their determinants are of the order of the rounding of the
+// coordinates, eps times the permanent); in double-double with exact
+// coordinate differences the error is of order eps^2 times the permanent,
+// so this stage decides them at a fraction of the cost of exact numbers.
+// Every operation is written out: an error-free transformation must not be
+// contracted or reassociated by the compiler.
+namespace double_double {
+
+// Inlined: GCC keeps the product out of line, and a call per product doubles
+// the stage's time.
+#if defined(__GNUC__)
+#define CGAL_FDT3_DD_INLINE inline __attribute__((always_inline))
+#else
+#define CGAL_FDT3_DD_INLINE inline
+#endif
+
+struct Number
+{
+  double hi, lo;
+};
+
+// Knuth's two-sum: hi + lo == a + b exactly.
+CGAL_FDT3_DD_INLINE Number two_sum(double a, double b)
+{
+  const double s = a + b;
+  const double b_virtual = s - a;
+  const double a_virtual = s - b_virtual;
+  return {s, (a - a_virtual) + (b - b_virtual)};
+}
+
+// Dekker's fast two-sum, for |a| >= |b| (or a == 0).
+CGAL_FDT3_DD_INLINE Number fast_two_sum(double a, double b)
+{
+  const double s = a + b;
+  return {s, b - (s - a)};
+}
+
+CGAL_FDT3_DD_INLINE Number difference(double a, double b) { return two_sum(a, -b); }
+
+// Accurate sum of two double-words (Joldes, Muller, Popescu, Algorithm 6).
+CGAL_FDT3_DD_INLINE Number add(const Number& x, const Number& y)
+{
+  const Number s = two_sum(x.hi, y.hi);
+  const Number t = two_sum(x.lo, y.lo);
+  const Number v = fast_two_sum(s.hi, s.lo + t.hi);
+  return fast_two_sum(v.hi, t.lo + v.lo);
+}
+
+CGAL_FDT3_DD_INLINE Number negate(const Number& x) { return {-x.hi, -x.lo}; }
+CGAL_FDT3_DD_INLINE Number subtract(const Number& x, const Number& y) { return add(x, negate(y)); }
+
+// Product of two double-words with FMA (same paper, Algorithm 12).
+CGAL_FDT3_DD_INLINE Number multiply(const Number& x, const Number& y)
+{
+  const double high = x.hi * y.hi;
+  const double high_error = std::fma(x.hi, y.hi, -high);
+  const double low = std::fma(x.lo, y.hi, std::fma(x.hi, y.lo, x.lo * y.lo));
+  return fast_two_sum(high, high_error + low);
+}
+
+#undef CGAL_FDT3_DD_INLINE
+
+} // namespace double_double
+
+// Sign of in_sphere_determinant(p, q, r, s, t) (Shewchuk's sign), evaluated
+// in double-double from exact differences with the same expression, or 0
+// when the result is within the error bound `bound` (see Filter_bounds).
+inline int in_sphere_determinant_sign_double_double(const double* p, const double* q, const double* r,
+                                                    const double* s, const double* t, double bound)
+{
+  using namespace double_double;
+  const Number ax = difference(p[0], t[0]), ay = difference(p[1], t[1]), az = difference(p[2], t[2]);
+  const Number bx = difference(q[0], t[0]), by = difference(q[1], t[1]), bz = difference(q[2], t[2]);
+  const Number cx = difference(r[0], t[0]), cy = difference(r[1], t[1]), cz = difference(r[2], t[2]);
+  const Number dx = difference(s[0], t[0]), dy = difference(s[1], t[1]), dz = difference(s[2], t[2]);
+
+  const Number ab = subtract(multiply(ax, by), multiply(bx, ay));
+  const Number bc = subtract(multiply(bx, cy), multiply(cx, by));
+  const Number cd = subtract(multiply(cx, dy), multiply(dx, cy));
+  const Number da = subtract(multiply(dx, ay), multiply(ax, dy));
+  const Number ac = subtract(multiply(ax, cy), multiply(cx, ay));
+  const Number bd = subtract(multiply(bx, dy), multiply(dx, by));
+
+  const Number abc = add(subtract(multiply(az, bc), multiply(bz, ac)), multiply(cz, ab));
+  const Number bcd = add(subtract(multiply(bz, cd), multiply(cz, bd)), multiply(dz, bc));
+  const Number cda = add(add(multiply(cz, da), multiply(dz, ac)), multiply(az, cd));
+  const Number dab = add(add(multiply(dz, ab), multiply(az, bd)), multiply(bz, da));
+
+  const Number alift = add(add(multiply(ax, ax), multiply(ay, ay)), multiply(az, az));
+  const Number blift = add(add(multiply(bx, bx), multiply(by, by)), multiply(bz, bz));
+  const Number clift = add(add(multiply(cx, cx), multiply(cy, cy)), multiply(cz, cz));
+  const Number dlift = add(add(multiply(dx, dx), multiply(dy, dy)), multiply(dz, dz));
+
+  const Number det = add(subtract(multiply(dlift, abc), multiply(clift, dab)),
+                         subtract(multiply(blift, cda), multiply(alift, bcd)));
+  if(det.hi > bound) return 1;
+  if(det.hi < -bound) return -1;
+  return 0;
+}
+
 // Exact sign of orientation(p, q, r, s).
 inline int orientation(const double* p, const double* q, const double* r, const double* s)
 {
@@ -338,6 +450,13 @@ inline int side_of_oriented_sphere_from(double det, const double* p, const doubl
   for(const double* x : others)
     for(int a = 0; a < 3; ++a) span.add_difference(x[a], t[a]);
   if(span.at_most(9)) return (det < 0) - (det > 0);
+  if(lo > Filter_bounds::in_sphere_double_double_min && hi < Filter_bounds::in_sphere_double_double_max) {
+    // |lo part| <= eps |hi part|: twice the bound decides the sign of hi + lo.
+    const double bound =
+        2 * Filter_bounds::in_sphere_double_double * (m[0] * m[1] * m[2]) * (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    const int sign = in_sphere_determinant_sign_double_double(p, q, r, s, t, bound);
+    if(sign != 0) return -sign;
+  }
   return predicates_detail::side_of_oriented_sphere_exact(p, q, r, s, t);
 }
 
