@@ -604,15 +604,25 @@ TEST(Filter_bounds, ConstantsCoverTheirDerivation)
 // (the input it is there for) at every scale of its range.
 TEST(Side_of_oriented_sphere, DoubleDoubleStageCertifiesExactSigns)
 {
+  // CGAL's sign (the opposite of Shewchuk's) of the stage, scalar and, where
+  // built, on AVX lanes: both must agree.
   const auto dd_sign = [](const std::array<Coordinates, 5>& p) {
     const double* const others[4] = {p[0].data(), p[1].data(), p[2].data(), p[3].data()};
     double m[3];
     P::max_differences(p[4].data(), others, m);
     const double bound = 2 * P::Filter_bounds::in_sphere_double_double * (m[0] * m[1] * m[2]) *
                          (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-    // Shewchuk's sign: the opposite of CGAL's.
-    return -P::in_sphere_determinant_sign_double_double(p[0].data(), p[1].data(), p[2].data(), p[3].data(),
-                                                        p[4].data(), bound);
+    const int scalar = -P::in_sphere_determinant_sign_double_double_scalar(p[0].data(), p[1].data(), p[2].data(),
+                                                                           p[3].data(), p[4].data(), bound);
+#ifdef CGAL_FDT3_SIMD_RECORDS
+    const int lanes = -P::in_sphere_determinant_sign_double_double_lanes(p[0].data(), p[1].data(), p[2].data(),
+                                                                         p[3].data(), p[4].data(), bound);
+    // Different roundings may leave one of them undecided, never opposite.
+    EXPECT_TRUE(scalar == lanes || scalar == 0 || lanes == 0) << scalar << " and " << lanes;
+    return lanes != 0 ? lanes : scalar;
+#else
+    return scalar;
+#endif
   };
   Generator g(12);
   for(const Frame& f : std::vector<Frame>{{1, 0}, {1e-25, 0}, {1e25, 0}, {1, 1e6}, {1e-3, 1e8}}) {
