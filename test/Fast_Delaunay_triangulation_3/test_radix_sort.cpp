@@ -187,5 +187,12 @@ TEST(RadixSort, ClusteredKeysTopDigitFirst)
       radix_sort(items, scratch, key_bits, threads);
       ASSERT_TRUE(same_items(expected, items)) << "key_bits " << key_bits << ", threads " << threads;
     }
+    // Powers of two: every level splits off one key and sends the rest one digit deeper.
+    std::vector<Item> powers(100003);
+    for(std::size_t i = 0; i < powers.size(); ++i)
+      powers[i] = {(std::uint64_t(1) << (i * 7 % 64)) & mask, std::uint32_t(i)};
+    std::vector<Item> items = powers, scratch;
+    radix_sort(items, scratch, key_bits, 2);
+    ASSERT_TRUE(same_items(stable_sorted(powers), items)) << "powers of two, key_bits " << key_bits;
   }
 }

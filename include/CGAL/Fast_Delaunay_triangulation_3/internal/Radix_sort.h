@@ -230,28 +230,29 @@ void msd_sort_bucket(Key_value<Value>* a, Key_value<Value>* b, std::size_t n, in
     const int bits = msd_digit_bits(n, shift);
     shift -= bits;
     const std::uint64_t mask = (std::uint64_t(1) << bits) - 1;
-    std::uint32_t count[std::size_t(1) << wide_digit_bits];
-    const std::size_t buckets = std::size_t(1) << bits;
-    std::fill(count, count + buckets, 0u);
-    for(std::size_t i = 0; i < n; ++i)
-      ++count[(source[i].key >> shift) & mask];
-    // One digit for all: nothing to move, look at the next one.
-    if(count[(source[0].key >> shift) & mask] == n)
-      continue;
+    // One array per level (8 KiB of stack; the recursion goes one level per
+    // digit where a bucket keeps more than insertion_sort_limit items): the
+    // counts, then the offsets, then, after the scatter, the bucket ends.
     std::uint32_t offset[std::size_t(1) << wide_digit_bits];
+    const std::size_t buckets = std::size_t(1) << bits;
+    std::fill(offset, offset + buckets, 0u);
+    for(std::size_t i = 0; i < n; ++i)
+      ++offset[(source[i].key >> shift) & mask];
+    // One digit for all: nothing to move, look at the next one.
+    if(offset[(source[0].key >> shift) & mask] == n)
+      continue;
     std::uint32_t sum = 0;
-    for(std::size_t d = 0; d < buckets; ++d) {
-      offset[d] = sum;
-      sum += count[d];
-    }
+    for(std::size_t d = 0; d < buckets; ++d)
+      sum += std::exchange(offset[d], sum);
     for(std::size_t i = 0; i < n; ++i)
       target[offset[(source[i].key >> shift) & mask]++] = source[i];
     const bool target_is_a = target == a;
     std::size_t begin = 0;
     for(std::size_t d = 0; d < buckets; ++d) {
-      if(count[d] > 0)
-        msd_sort_bucket(a + begin, b + begin, count[d], shift, target_is_a);
-      begin += count[d];
+      const std::size_t end = offset[d];
+      if(end > begin)
+        msd_sort_bucket(a + begin, b + begin, end - begin, shift, target_is_a);
+      begin = end;
     }
     return;
   }
