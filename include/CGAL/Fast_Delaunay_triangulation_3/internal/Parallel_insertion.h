@@ -474,9 +474,10 @@ private:
     }
 
     // Plain keys where the attempt's partition may change.
+    const std::uint64_t mask = Attempt_curve::key_mask;
     std::vector<std::uint64_t> breaks;
-    for(int j = 1; j < partitions; ++j) breaks.push_back((first_key[j] - c.transform.shift) & Attempt_curve::key_mask);
-    if(c.transform.shift != 0) breaks.push_back((Attempt_curve::key_mask + 1 - c.transform.shift) & Attempt_curve::key_mask);
+    for(int j = 1; j < partitions; ++j) breaks.push_back((first_key[j] - c.transform.shift) & mask);
+    if(c.transform.shift != 0) breaks.push_back((mask + 1 - c.transform.shift) & mask);
     std::sort(breaks.begin(), breaks.end());
     for(const Vertex_range& r : by_key) {
       Vertex_id begin = r.first;
