@@ -102,6 +102,21 @@ inline Digit_plan plan_digits(int key_bits, int max_bits)
   return {passes, (key_bits + passes - 1) / passes};
 }
 
+// The counting sort step both directions share: `offset` holds the count of
+// every digit of the n source items; it becomes their first positions, the
+// items go to target in a stable order, and `offset` ends holding where every
+// digit's run ends.
+template <class Value, class Count>
+void scatter_by_digit(const Key_value<Value>* source, Key_value<Value>* target, std::size_t n, int shift,
+                      std::uint64_t mask, Count* offset, std::size_t buckets)
+{
+  Count sum = 0;
+  for(std::size_t d = 0; d < buckets; ++d)
+    sum += std::exchange(offset[d], sum);
+  for(std::size_t i = 0; i < n; ++i)
+    target[offset[(source[i].key >> shift) & mask]++] = source[i];
+}
+
 template <class Value>
 void insertion_sort(std::vector<Key_value<Value>>& items)
 {
@@ -135,11 +150,7 @@ void sort_sequential(std::vector<Key_value<Value>>& items, std::vector<Key_value
     // When every item has the same digit the pass would only copy (e.g. the high digits of small coordinates).
     if(offset[(source[0].key >> shift) & mask] == n)
       continue;
-    std::size_t sum = 0;
-    for(std::size_t b = 0; b < buckets; ++b)
-      sum += std::exchange(offset[b], sum);
-    for(std::size_t i = 0; i < n; ++i)
-      target[offset[(source[i].key >> shift) & mask]++] = source[i];
+    scatter_by_digit(source, target, n, shift, mask, offset, buckets);
     std::swap(source, target);
   }
   if(source != items.data())
@@ -241,11 +252,7 @@ void msd_sort_bucket(Key_value<Value>* a, Key_value<Value>* b, std::size_t n, in
     // One digit for all: nothing to move, look at the next one.
     if(offset[(source[0].key >> shift) & mask] == n)
       continue;
-    std::uint32_t sum = 0;
-    for(std::size_t d = 0; d < buckets; ++d)
-      sum += std::exchange(offset[d], sum);
-    for(std::size_t i = 0; i < n; ++i)
-      target[offset[(source[i].key >> shift) & mask]++] = source[i];
+    scatter_by_digit(source, target, n, shift, mask, offset, buckets);
     const bool target_is_a = target == a;
     std::size_t begin = 0;
     for(std::size_t d = 0; d < buckets; ++d) {
