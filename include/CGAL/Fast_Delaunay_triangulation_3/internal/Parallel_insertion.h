@@ -176,8 +176,8 @@ public:
       // (every mesh vertex's, unless sorted runs spare them) and gains at most
       // a share of its few points' insertion time: past this ratio the
       // sequential finish is faster.
-      if(attempt > 0 && partitions > 1 &&
-         points.size() * retry_mesh_ratio < keys_to_compute(points, attempt, partitions))
+      const bool rotated = partitions > 1 && rotation_of_sorted_run(points, attempt, partitions);
+      if(attempt > 0 && partitions > 1 && points.size() * retry_mesh_ratio < keys_to_compute(points, rotated))
         partitions = 1;
       Partition_round row;
       row.points = points.size();
@@ -190,7 +190,7 @@ public:
         points.clear();
       } else {
         std::vector<Vertex_id> failed;
-        insert_partitioned(points, partitions, attempt++, first_new, duplicate_of, failed, stats, policy);
+        insert_partitioned(points, partitions, attempt++, rotated, first_new, duplicate_of, failed, stats, policy);
         row.inserted = points.size() - failed.size();
         points.swap(failed);
         if(5 * row.inserted < row.points) partitions /= 2;
@@ -340,13 +340,19 @@ private:
     return std::min(m_.vertices.size(), std::max<std::size_t>(vertex_end_, std::size_t(largest_id(points)) + 1));
   }
 
+  // Whether the attempt's curve is the plain one shifted and `points` are in
+  // plain curve order: then its order is a rotation of theirs and the
+  // vertices of sorted runs need no key (one linear check per attempt).
+  bool rotation_of_sorted_run(const std::vector<Vertex_id>& points, int attempt, int partitions) const
+  {
+    return transform_for(attempt, partitions, 3 * Attempt_curve::bits).shift_only() && in_run_order(points);
+  }
+
   // Vertex keys an attempt computes one by one before its tasks start: the
   // price of a retry, paid whatever the number of points.
-  std::size_t keys_to_compute(const std::vector<Vertex_id>& points, int attempt, int partitions) const
+  std::size_t keys_to_compute(const std::vector<Vertex_id>& points, bool rotated) const
   {
-    if(transform_for(attempt, partitions, 3 * Attempt_curve::bits).shift_only() && in_run_order(points))
-      return vertices_outside_runs(mesh_vertex_end(points));
-    return vertices_in_mesh_;
+    return rotated ? vertices_outside_runs(mesh_vertex_end(points)) : vertices_in_mesh_;
   }
 
   // The points of an attempt in the order of its curve, cut into
@@ -505,13 +511,13 @@ private:
   }
 
   template <class Policy>
-  void insert_partitioned(const std::vector<Vertex_id>& points, int partitions, int attempt,
+  void insert_partitioned(const std::vector<Vertex_id>& points, int partitions, int attempt, bool rotated,
                           Vertex_id first_new, std::vector<Vertex_id>& duplicate_of,
                           std::vector<Vertex_id>& failed, Kernel_statistics& stats, Policy& policy)
   {
     const Attempt_curve keys(lo_, hi_, transform_for(attempt, partitions, 3 * Attempt_curve::bits));
-    Attempt_cut plan = keys.shift_only() && in_run_order(points) ? cut_rotated(m_, points, partitions, keys)
-                                                                  : cut_by_sorting(m_, points, partitions, keys);
+    Attempt_cut plan = rotated ? cut_rotated(m_, points, partitions, keys)
+                               : cut_by_sorting(m_, points, partitions, keys);
     const std::vector<Vertex_id>& sorted = plan.sorted;
     const std::vector<std::size_t>& cut = plan.cut;
     assign_vertex_partitions(mesh_vertex_end(points), partitions, keys, plan.first_key);
