@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh clone: installs what is missing, then
-#   1. Release build of everything (tests, examples, benchmarks) in build/, all tests;
+#   1. Release build of everything (tests, examples, benchmarks, tools) in build/, all tests;
 #   2. ASan + UBSan build of the tests in build-asan/, all tests;
-#   3. if some test carries the label `parallel`: ThreadSanitizer build in build-tsan/, the parallel tests.
-# Every stage runs even if an earlier one failed; the exit status is non-zero if any failed.
+#   3. ThreadSanitizer build of the parallel tests (program test_parallel) in build-tsan/;
+#   4. the kernel's tests built without -march=native (the scalar paths of a plain Release build) in build-portable/;
+#   5. the kernel's tests built without TBB in build-no-tbb/.
+# Every stage runs even if an earlier one failed and prints its seconds; the exit status is non-zero if any failed.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -39,28 +41,32 @@ asan_ubsan_build() {
     "${sanitizer_runner[@]}" ctest --test-dir build-asan --output-on-failure -j"$jobs"
 }
 
-# The number of tests labelled `parallel` in the Release build.
-parallel_test_count() {
-  ctest --test-dir build -N -L parallel 2>/dev/null | sed -n 's/^Total Tests: *//p'
-}
-
-# The test programs the test CMakeLists labels `parallel`: those with "parallel" in their name. Only they are
-# built with ThreadSanitizer.
-parallel_test_targets() {
-  local file
-  for file in test/Fast_Delaunay_triangulation_3/test_*parallel*.cpp; do
-    if [ -e "$file" ]; then basename "$file" .cpp; fi
-  done
-}
-
 tsan_build() {
-  local targets
-  mapfile -t targets < <(parallel_test_targets)
-  [ "${#targets[@]}" -gt 0 ] &&
-    cmake -S . -B build-tsan "${sanitizer_flags[@]}" -DFDT3_SANITIZE=thread \
-          -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF &&
-    "${sanitizer_runner[@]}" cmake --build build-tsan -j"$jobs" --target "${targets[@]}" &&
+  cmake -S . -B build-tsan "${sanitizer_flags[@]}" -DFDT3_SANITIZE=thread \
+        -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF -DFDT3_BUILD_TOOLS=OFF &&
+    "${sanitizer_runner[@]}" cmake --build build-tsan -j"$jobs" --target test_parallel &&
     "${sanitizer_runner[@]}" ctest --test-dir build-tsan -L parallel --output-on-failure -j"$jobs"
+}
+
+# The kernel's tests (predicates and their filters, agreement with CGAL on every distribution, degenerate inputs,
+# the partitioned engine): the code paths that a build option selects.
+kernel_tests="test_predicates;test_agreement_with_cgal;test_degenerate_inputs;test_parallel_insertion"
+
+# Without -march=native: the scalar predicates and sorts that a user's plain Release build compiles.
+portable_build() {
+  cmake -S . -B build-portable -DCMAKE_BUILD_TYPE=Release -DFDT3_NATIVE=OFF -DFDT3_TEST_FILES="$kernel_tests" \
+        -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF -DFDT3_BUILD_TOOLS=OFF &&
+    cmake --build build-portable -j"$jobs" &&
+    ctest --test-dir build-portable --output-on-failure -j"$jobs"
+}
+
+# Without TBB: the parallel engine's partitions run one after the other, and parallel data structures fall back.
+no_tbb_build() {
+  cmake -S . -B build-no-tbb -DCMAKE_BUILD_TYPE=Release -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON \
+        -DFDT3_TEST_FILES="$kernel_tests" -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF \
+        -DFDT3_BUILD_TOOLS=OFF &&
+    cmake --build build-no-tbb -j"$jobs" &&
+    ctest --test-dir build-no-tbb --output-on-failure -j"$jobs"
 }
 
 failed=()
@@ -77,18 +83,16 @@ stage() {
   fi
 }
 
+suite_start=$SECONDS
 stage release_build
 stage asan_ubsan_build
-if [ "$(parallel_test_count)" -gt 0 ] 2>/dev/null; then
-  stage tsan_build
-else
-  echo
-  echo "=== tsan_build: skipped (no test labelled 'parallel')"
-fi
+stage tsan_build
+stage portable_build
+stage no_tbb_build
 
 echo
 if [ "${#failed[@]}" -gt 0 ]; then
-  echo "test.sh: FAILED stages: ${failed[*]}"
+  echo "test.sh: FAILED stages: ${failed[*]} ($((SECONDS - suite_start)) s in all)"
   exit 1
 fi
-echo "test.sh: all stages passed"
+echo "test.sh: all stages passed ($((SECONDS - suite_start)) s in all)"

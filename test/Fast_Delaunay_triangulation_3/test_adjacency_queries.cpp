@@ -18,7 +18,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_adjacency_queries {
 
 typedef std::vector<Point_key> Face;
 const Point_key infinite_key(std::numeric_limits<double>::infinity(), 0, 0);
@@ -263,4 +263,4 @@ TEST(AdjacencyQueries, CgalCirculatorIdioms)
   EXPECT_EQ(count_all(fast), incidences);
 }
 
-} // namespace
+} // namespace test_adjacency_queries

@@ -8,7 +8,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_agreement_with_cgal {
 
 struct Case { std::string distribution; std::size_t n; };
 
@@ -47,9 +47,9 @@ INSTANTIATE_TEST_SUITE_P(Distributions, Agreement, ::testing::ValuesIn(cases()),
                            return info.param.distribution + "_" + std::to_string(info.param.n);
                          });
 
-} // namespace
+} // namespace test_agreement_with_cgal
 
-namespace {
+namespace test_agreement_with_cgal {
 
 // The cached sub-determinants (paper §2.4) only change how the conflict test
 // is evaluated: cells must still be CGAL's, degenerate inputs included.
@@ -101,9 +101,9 @@ TEST(Sub_determinants, ExtremeExtents)
 INSTANTIATE_TEST_SUITE_P(Distributions, Sub_determinants,
                          ::testing::Values("uniform", "clusters", "sphere", "grid", "duplicates", "offset", "tiny"));
 
-} // namespace
+} // namespace test_agreement_with_cgal
 
-namespace {
+namespace test_agreement_with_cgal {
 
 // Inserting the centre of a sphere of many points makes every cell conflict:
 // the cavity boundary has far more than 31 vertices, so the Delaunay ball
@@ -123,4 +123,4 @@ TEST(Regression, CosphericalShellForcesLargeCavityFallback)
   EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
 }
 
-} // namespace
+} // namespace test_agreement_with_cgal

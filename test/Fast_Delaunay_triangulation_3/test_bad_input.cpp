@@ -16,7 +16,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_bad_input {
 
 struct Bad_value
 {
@@ -244,4 +244,4 @@ TEST(Bad_input, ExtremeFiniteCoordinatesAreAccepted)
   expect_same_as_cgal(one_by_one, cgal);
 }
 
-} // namespace
+} // namespace test_bad_input

@@ -14,7 +14,7 @@
 
 using namespace CGAL::Fast_Delaunay_triangulation_3_internal;
 
-namespace {
+namespace test_brio {
 
 std::vector<double> uniform_points(std::size_t n, std::uint64_t seed, double scale = 1.0, double offset = 0.0)
 {
@@ -96,8 +96,6 @@ double mean_step(const std::vector<double>& xyz, const std::vector<std::uint32_t
     sum += distance(xyz, order[k - 1], order[k]);
   return sum / double(end - begin - 1);
 }
-
-} // namespace
 
 TEST(Brio, IsPermutationWithConsistentRounds)
 {
@@ -243,3 +241,5 @@ TEST(Brio, DegenerateInputs)
     EXPECT_TRUE(rounds_follow_moore_curve(inputs[k], brio)) << "input " << k;
   }
 }
+
+} // namespace test_brio

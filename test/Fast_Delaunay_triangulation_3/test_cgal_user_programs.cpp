@@ -29,7 +29,7 @@
 
 using namespace fdt3_test;
 
-namespace {
+namespace test_cgal_user_programs {
 
 // ---------------------------------------------------------------- printing helpers
 template <class Tr>
@@ -676,4 +676,4 @@ TEST(CgalUserPrograms, SegmentTraverser)
   EXPECT_GT(std::count(text.begin(), text.end(), '['), 30);
 }
 
-} // namespace
+} // namespace test_cgal_user_programs

@@ -31,7 +31,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_concept_interface {
 
 struct Named_points
 {
@@ -821,4 +821,4 @@ INSTANTIATE_TEST_SUITE_P(Distributions, Same_as_cgal,
                          ::testing::Values("uniform", "gauss", "clusters", "sphere", "grid", "duplicates",
                                            "offset", "tiny"));
 
-} // namespace
+} // namespace test_concept_interface

@@ -21,7 +21,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_conflicts_and_insertion {
 
 template <class Tr>
 std::array<Point_key, 3> facet_key(const Tr& tr, const typename Tr::Facet& f)
@@ -331,4 +331,4 @@ TEST(HintedInsertion, VertexCellsStayRightAcrossHintedInsertions)
   EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
 }
 
-} // namespace
+} // namespace test_conflicts_and_insertion

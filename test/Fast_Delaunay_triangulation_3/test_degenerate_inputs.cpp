@@ -17,7 +17,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_degenerate_inputs {
 
 Fast_dt insert_one_by_one(const std::vector<Point>& points)
 {
@@ -386,4 +386,4 @@ TEST(Incremental, IntegerSphereOnePointAtATime)
   expect_same_as_cgal_after_each_step({{points, true}});
 }
 
-} // namespace
+} // namespace test_degenerate_inputs

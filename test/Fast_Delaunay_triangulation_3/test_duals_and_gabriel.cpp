@@ -24,7 +24,7 @@ using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 typedef K::Vector_3 Vector;
 
-namespace {
+namespace test_duals_and_gabriel {
 
 // Our cell with the points of CGAL's cell c, and our index of c's vertex i.
 struct Matcher
@@ -283,4 +283,4 @@ TEST(SideOfTetrahedron, AsCgal)
   for(int k = 0; k < 4; ++k) EXPECT_GT(kinds[k], 0u) << "locate type " << k << " never hit";
 }
 
-} // namespace
+} // namespace test_duals_and_gabriel

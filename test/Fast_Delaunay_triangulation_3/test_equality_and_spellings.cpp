@@ -23,7 +23,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_equality_and_spellings {
 
 std::vector<Point> input(const char* name, std::size_t n) { return to_points<Point>(make_points(name, n, 61)); }
 
@@ -168,4 +168,4 @@ TEST(Spellings, ParallelTagWithSpatialLockGrid)
 }
 #endif
 
-} // namespace
+} // namespace test_equality_and_spellings

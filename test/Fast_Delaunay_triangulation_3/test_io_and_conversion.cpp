@@ -23,7 +23,7 @@
 #include <utility>
 #include <vector>
 
-namespace {
+namespace test_io_and_conversion {
 
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
@@ -625,4 +625,4 @@ TEST(Conversion, TetrahedralRemeshingAcceptsTheMeshComplex)
   EXPECT_NEAR(volume_after, volume_before, 1e-9 * volume_before);
 }
 
-} // namespace
+} // namespace test_io_and_conversion

@@ -28,7 +28,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_lower_dimensional_queries {
 
 typedef std::vector<Point_key> Simplex_key; // sorted points, the infinite one as infinite_point_key
 
@@ -773,4 +773,4 @@ TEST(Lower_dimensional_insertion, ManySingleInsertionsStayFast)
   EXPECT_TRUE(fast.is_valid());
 }
 
-} // namespace
+} // namespace test_lower_dimensional_queries

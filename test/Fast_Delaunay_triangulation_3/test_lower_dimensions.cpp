@@ -21,7 +21,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_lower_dimensions {
 
 // CGAL's conventions for cells below dimension 3, checked through handles.
 template <class Tr>
@@ -437,4 +437,4 @@ TEST(Validity, DetectsBrokenLowerDimensionalCells)
   }
 }
 
-} // namespace
+} // namespace test_lower_dimensions

@@ -19,7 +19,7 @@
 #include <cmath>
 #include <set>
 
-namespace {
+namespace test_mesher_c3t3 {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Tetrahedral_remeshing::Remeshing_triangulation_3<K> Remeshing_triangulation;
@@ -63,4 +63,4 @@ TEST(MesherC3t3, NestedSpheresInCgalsComplex)
   EXPECT_NEAR(volume, enclosed, 1e-9 * enclosed);
 }
 
-} // namespace
+} // namespace test_mesher_c3t3

@@ -18,7 +18,7 @@
 #include <limits>
 #include <string>
 
-namespace {
+namespace test_mesher_input {
 
 using mesher_shapes::Surface;
 namespace fm = CGAL::Fast_mesher_3;
@@ -224,4 +224,4 @@ TEST(MesherInput, ReadsOffStlObjAndSeveralFiles)
   for(const std::string& path : {off, obj, stl}) std::remove(path.c_str());
 }
 
-} // namespace
+} // namespace test_mesher_input

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace test_mesher_output {
 
 namespace fm = CGAL::Fast_mesher_3;
 
@@ -209,4 +209,4 @@ TEST(MesherOutput, UnknownExtensionIsRefused)
   EXPECT_THROW(fm::write_mesh(temporary("nested.xyz"), nested_spheres_mesh()), std::invalid_argument);
 }
 
-} // namespace
+} // namespace test_mesher_output

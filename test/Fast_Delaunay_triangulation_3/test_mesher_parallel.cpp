@@ -22,7 +22,7 @@
 #include <set>
 #include <vector>
 
-namespace {
+namespace test_mesher_parallel {
 
 using namespace mesher_checks;
 
@@ -164,4 +164,4 @@ TEST(ParallelRefinement, TinyPartitionsFallBackToSequential)
   EXPECT_GT(stats.partitioned_attempts, 0u);
 }
 
-} // namespace
+} // namespace test_mesher_parallel

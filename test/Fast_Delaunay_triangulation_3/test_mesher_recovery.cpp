@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace test_mesher_recovery {
 
 using mesher_shapes::read_cgal_data_surface;
 
@@ -228,4 +228,4 @@ TEST(BoundaryRecovery, CgalDataCouplingSecondTry)
   EXPECT_GT(report.steiner_points, 0u);
 }
 
-} // namespace
+} // namespace test_mesher_recovery

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace test_mesher_shapes {
 
 using mesher_shapes::read_cgal_data_surface;
 
@@ -178,4 +178,4 @@ TEST(Mesher, CgalDataMechanicalPart)
   EXPECT_TRUE(stats.used_tetgen);
 }
 
-} // namespace
+} // namespace test_mesher_shapes

@@ -14,7 +14,7 @@
 
 using namespace CGAL::Fast_Delaunay_triangulation_3_internal;
 
-namespace {
+namespace test_moore_curve {
 
 struct Cell
 {
@@ -45,8 +45,6 @@ std::vector<Cell> cells_in_curve_order(const Moore_curve& curve)
       }
   return at;
 }
-
-} // namespace
 
 TEST(MooreCurve, BijectionOntoAllIndices)
 {
@@ -311,3 +309,5 @@ TEST(MooreGrid, CoarserCellIsPrefixOfFiner)
     }
   }
 }
+
+} // namespace test_moore_curve

@@ -18,7 +18,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_parallel_insertion {
 
 // Small enough for ThreadSanitizer in CI, large enough (>= 2 x 3000 points per
 // round) for the partitioned rounds to run.
@@ -184,4 +184,4 @@ TEST(Parallel_insertion, InsideSingleThreadArena)
 }
 #endif
 
-} // namespace
+} // namespace test_parallel_insertion

@@ -19,7 +19,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_point_location {
 
 const Point_key infinite_key(std::numeric_limits<double>::infinity(), 0, 0);
 
@@ -334,4 +334,4 @@ TEST(PointLocation, TriangleAndSegmentAsCgal)
   EXPECT_TRUE(signs(cgal) == signs(fast));
 }
 
-} // namespace
+} // namespace test_point_location

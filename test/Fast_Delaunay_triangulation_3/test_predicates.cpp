@@ -27,7 +27,7 @@
 using namespace fdt3_test;
 namespace P = CGAL::Fast_Delaunay_triangulation_3_internal;
 
-namespace {
+namespace test_predicates {
 
 typedef std::array<double, 3> Coordinates;
 
@@ -683,4 +683,4 @@ TEST(Filter_bounds, LimitsKeepTheBoundsInNormalRange)
   EXPECT_LT(4 * 6 * hi_s * hi_s * hi_s * (3 * hi_s * hi_s), DBL_MAX);
 }
 
-} // namespace
+} // namespace test_predicates

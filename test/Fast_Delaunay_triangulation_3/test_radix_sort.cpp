@@ -11,7 +11,7 @@
 
 using namespace CGAL::Fast_Delaunay_triangulation_3_internal;
 
-namespace {
+namespace test_radix_sort {
 
 using Item = Key_value<std::uint32_t>;
 
@@ -52,8 +52,6 @@ std::vector<Item> stable_sorted(std::vector<Item> items)
 
 const int key_widths[] = {1, 2, 3, 7, 8, 9, 11, 12, 21, 22, 23, 27, 30, 33, 34, 44, 45, 57, 63, 64};
 const std::size_t sizes[] = {0, 1, 2, 63, 64, 65, 1000, 100000};
-
-} // namespace
 
 TEST(RadixSort, MatchesStableSortOnRandomKeys)
 {
@@ -196,3 +194,5 @@ TEST(RadixSort, ClusteredKeysTopDigitFirst)
     ASSERT_TRUE(same_items(stable_sorted(powers), items)) << "powers of two, key_bits " << key_bits;
   }
 }
+
+} // namespace test_radix_sort

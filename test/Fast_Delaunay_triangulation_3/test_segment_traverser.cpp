@@ -42,7 +42,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace {
+namespace test_segment_traverser {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Exact_kernel;
@@ -330,9 +330,9 @@ TEST(SegmentTraverser, SegmentsLeavingTheHull)
   EXPECT_GT(r.segments, 20);
 }
 
-} // namespace
+} // namespace test_segment_traverser
 
-namespace {
+namespace test_segment_traverser {
 
 // Points just outside the middle of hull facets, offset along the outer
 // normal, kept when they see that facet only: CGAL's locate has a single
@@ -442,4 +442,4 @@ TEST(SegmentTraverser, DimensionTwo)
   EXPECT_GE(compared, 40);
 }
 
-} // namespace
+} // namespace test_segment_traverser

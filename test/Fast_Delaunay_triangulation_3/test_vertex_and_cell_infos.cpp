@@ -24,7 +24,7 @@
 
 using namespace fdt3_test;
 
-namespace {
+namespace test_vertex_and_cell_infos {
 
 // CGAL leaves a new int info uninitialised; a class type has a definite Info().
 struct Label
@@ -323,4 +323,4 @@ TEST(InfosFast, ParallelDataStructure)
 }
 #endif
 
-} // namespace
+} // namespace test_vertex_and_cell_infos

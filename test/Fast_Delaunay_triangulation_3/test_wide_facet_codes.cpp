@@ -13,7 +13,7 @@
 using namespace fdt3_test;
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 
-namespace {
+namespace test_wide_facet_codes {
 
 static_assert(std::is_same<CGAL::Fast_Delaunay_triangulation_3_internal::Facet_code, std::uint64_t>::value,
               "the switch selects 64-bit facet codes");
@@ -38,7 +38,7 @@ TEST_P(Wide_facet_codes, SameCellsAsCgal)
 INSTANTIATE_TEST_SUITE_P(Distributions, Wide_facet_codes,
                          ::testing::Values("uniform", "clusters", "grid", "duplicates"));
 
-} // namespace
+} // namespace test_wide_facet_codes
 
 // 4 * tetrahedron + facet in 64 bits.
 static_assert(CGAL::Fast_Delaunay_triangulation_3_internal::max_tets == (std::uint64_t(1) << 62),
