@@ -282,10 +282,16 @@ struct Flat_storage
     if(with_sub_determinants) tet_sub_determinants.resize(4 * slots);
   }
 
-  // Room for `n` more tetrahedron slots without reallocation.
+  // Room for `n` more tetrahedron slots without reallocation.  The capacity
+  // grows by half at least: insertions of one point at a time each ask for a
+  // few dozen slots, and reserving exactly that much would reallocate the
+  // whole array at every insertion (quadratic under an allocator whose
+  // realloc copies).
   void reserve_tets(std::size_t n)
   {
-    const std::size_t total = std::min<std::size_t>(number_of_slots() + n, max_tets);
+    const std::size_t wanted = std::min<std::size_t>(number_of_slots() + n, max_tets);
+    if(wanted <= tets.capacity()) return;
+    const std::size_t total = std::min<std::size_t>(std::max(wanted, tets.capacity() + tets.capacity() / 2), max_tets);
     tets.reserve(total);
     if(with_sub_determinants) tet_sub_determinants.reserve(4 * total);
   }
