@@ -180,7 +180,9 @@ private:
 // dereferences as its handle does (to the vertex or cell, as CGAL's
 // iterators); converts to the handle.  Bidirectional, as CGAL's iterators
 // over its containers: decrementing the first position is undefined, as
-// there.
+// there.  The element lives in the iterator (its handle's facade), so a
+// std::reverse_iterator, which dereferences a temporary copy, would hand out
+// a dangling reference: walk backwards with --.
 template <class Handle, class Index, class Accept>
 class Filtered_index_iterator
 {
