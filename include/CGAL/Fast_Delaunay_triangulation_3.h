@@ -131,6 +131,9 @@ public:
   typedef typename Gt::Object_3 Object;
   typedef std::size_t size_type;
   typedef std::ptrdiff_t difference_type;
+  // As Triangulation_3's (which says: "to have a back_inserter").
+  typedef Point value_type;
+  typedef const value_type& const_reference;
 
 private:
   // A user's vertex or cell base with members of its own (see User_bases.h):
@@ -991,6 +994,22 @@ public:
   Vertex_handle nearest_vertex(const Point& p, Cell_handle start = Cell_handle()) const
   {
     return Fast_Delaunay_triangulation_3_internal::nearest_vertex(*this, p, start);
+  }
+  // The finite vertex of c nearest to p, among its dimension() + 1 vertices
+  // (CGAL's cells below dimension 3); on a tie the lower index in c, as
+  // CGAL, whose vertex order in a cell may differ from this one's.
+  Vertex_handle nearest_vertex_in_cell(const Point& p, Cell_handle c) const
+  {
+    CGAL_precondition(dimension() >= 0 && c != Cell_handle());
+    const auto closer = geom_traits().less_distance_to_point_3_object();
+    Vertex_handle nearest;
+    for(int i = 0; i <= std::max(dimension(), 0); ++i) {
+      const Vertex_handle v = c->vertex(i);
+      if(v == Vertex_handle() || is_infinite(v)) continue;
+      if(nearest == Vertex_handle() || closer(p, v->point(), nearest->point())) nearest = v;
+    }
+    CGAL_postcondition(nearest != Vertex_handle());
+    return nearest;
   }
   bool is_vertex(const Point& p, Vertex_handle& v) const
   {

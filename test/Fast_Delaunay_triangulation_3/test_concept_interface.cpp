@@ -873,6 +873,38 @@ TYPED_TEST(Concept, InsertOutsideAffineHullRaisesTheDimension)
   }
 }
 
+// nearest_vertex_in_cell: a finite vertex of the cell, and none of the
+// cell's finite vertices is strictly nearer (CGAL's cells below dimension 3
+// included: triangles and segments; in dimension 0 CGAL 5.5 reads
+// c->vertex(1), a null handle, so that dimension is left out).
+TYPED_TEST(Concept, NearestVertexInCellIsTheNearestOfItsFiniteVertices)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  const std::vector<Point> queries = to_points<Point>(make_points("uniform", 5, 43));
+  for(const Named_points& input : inputs_of_every_dimension()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    if(tr.dimension() < 1) continue;
+    std::vector<Cell_handle> cells = lower_dimensional_cells(tr);
+    for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c) cells.push_back(c);
+    const K::Less_distance_to_point_3 closer = tr.geom_traits().less_distance_to_point_3_object();
+    for(const Cell_handle c : cells) {
+      for(const Point& q : queries) {
+        const Vertex_handle v = tr.nearest_vertex_in_cell(q, c);
+        ASSERT_TRUE(v != Vertex_handle());
+        EXPECT_FALSE(tr.is_infinite(v));
+        EXPECT_TRUE(c->has_vertex(v));
+        for(int i = 0; i <= tr.dimension(); ++i) {
+          if(!tr.is_infinite(c->vertex(i))) {
+            EXPECT_FALSE(closer(q, c->vertex(i)->point(), v->point()));
+          }
+        }
+      }
+    }
+  }
+}
+
 // The stream is flushed when operator<< returns, as CGAL's writer leaves
 // it: CGAL's simple_triangulation_3 reads its file back while the
 // std::ofstream that wrote it is still open.
