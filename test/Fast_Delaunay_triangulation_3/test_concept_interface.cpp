@@ -6,9 +6,11 @@
 // other and to independent facts (Euler's relation, distinct input points).
 // The tests at the end compare the two triangulations of the same points.
 //
-// Only dimension 3 is exercised by the typed tests, except for the empty
-// triangulation and insertion; test_lower_dimensions.cpp runs the conventions
-// of dimensions 0 to 2 on both triangulations.
+// Most typed tests exercise dimension 3; the empty triangulation, insertion,
+// backward iteration, points(), insert_outside_affine_hull,
+// nearest_vertex_in_cell and the file flush run in every dimension, and
+// test_lower_dimensions.cpp runs the conventions of dimensions 0 to 2 on both
+// triangulations.
 #include "triangulation_checks.h"
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
