@@ -113,7 +113,15 @@ public:
   // insert with the kernel's visibility walk from the last insertion or the
   // hint, which is already the fast path; there is no hierarchy to build.
   typedef typename Arguments::Location_policy Location_policy;
-  typedef typename Default::Get<Lock_data_structure_, void>::type Lock_data_structure;
+  // CGAL's own choice, taken from CGAL: with Parallel_tag (and TBB) its
+  // Spatial_lock_grid_3<Tag_priority_blocking> when the argument is
+  // Default, else void when Default; the argument when given.  Stored by
+  // the constructors and get/set_lock_data_structure, never locked.
+  typedef typename Triangulation_3_base<Concurrency_tag, Lock_data_structure_>::Lock_data_structure
+      Lock_data_structure;
+  // As CGAL's Delaunay_triangulation_3: not a regular nor a periodic triangulation.
+  typedef Tag_false Weighted_tag;
+  typedef Tag_false Periodic_tag;
   typedef typename Gt::Point_3 Point;
   typedef typename Gt::Segment_3 Segment;
   typedef typename Gt::Triangle_3 Triangle;
@@ -123,6 +131,9 @@ public:
   typedef typename Gt::Object_3 Object;
   typedef std::size_t size_type;
   typedef std::ptrdiff_t difference_type;
+  // As Triangulation_3's (which says: "to have a back_inserter").
+  typedef Point value_type;
+  typedef const value_type& const_reference;
 
 private:
   // A user's vertex or cell base with members of its own (see User_bases.h):
@@ -197,7 +208,7 @@ public:
   class All_vertices_iterator
   {
   public:
-    typedef std::forward_iterator_tag iterator_category;
+    typedef std::bidirectional_iterator_tag iterator_category;
     typedef decltype(*std::declval<const Vertex_handle&>()) reference;
     typedef typename std::remove_reference<reference>::type value_type;
     typedef value_type* pointer;
@@ -216,6 +227,14 @@ public:
       return *this;
     }
     All_vertices_iterator operator++(int) { All_vertices_iterator old = *this; ++*this; return old; }
+    All_vertices_iterator& operator--()
+    {
+      CGAL_precondition(position_ > 0);
+      --position_;
+      handle_ = Vertex_handle(handle_.owner(), id_at(position_));
+      return *this;
+    }
+    All_vertices_iterator operator--(int) { All_vertices_iterator old = *this; --*this; return old; }
     friend bool operator==(const All_vertices_iterator& a, const All_vertices_iterator& b) { return a.position_ == b.position_; }
     friend bool operator!=(const All_vertices_iterator& a, const All_vertices_iterator& b) { return a.position_ != b.position_; }
 
@@ -231,12 +250,13 @@ public:
   typedef All_vertices_iterator Vertex_iterator;
 
   // Facets and edges are enumerated once each, from the cell of smallest
-  // index among those that share them.
+  // index among those that share them.  Both are bidirectional, as CGAL's:
+  // a code is listed when accepts(code), in either direction.
   template <bool finite_only>
   class Facet_iterator_t
   {
   public:
-    typedef std::forward_iterator_tag iterator_category;
+    typedef std::bidirectional_iterator_tag iterator_category;
     typedef Facet value_type;
     typedef std::ptrdiff_t difference_type;
     typedef const Facet* pointer;
@@ -248,28 +268,35 @@ public:
     const Facet* operator->() const { return &facet_; }
     Facet_iterator_t& operator++() { ++code_; skip(); return *this; }
     Facet_iterator_t operator++(int) { Facet_iterator_t old = *this; ++*this; return old; }
+    Facet_iterator_t& operator--()
+    {
+      do {
+        CGAL_precondition(code_ > 0);
+        --code_;
+      } while(!accepts(code_));
+      facet_ = Facet(Cell_handle(tr_, code_ >> 2), static_cast<int>(code_ & 3));
+      return *this;
+    }
+    Facet_iterator_t operator--(int) { Facet_iterator_t old = *this; --*this; return old; }
     friend bool operator==(const Facet_iterator_t& a, const Facet_iterator_t& b) { return a.code_ == b.code_; }
     friend bool operator!=(const Facet_iterator_t& a, const Facet_iterator_t& b) { return a.code_ != b.code_; }
 
   private:
     // In dimension 2 the facets are the triangles, as (c, 3).
-    void skip()
+    bool accepts(std::size_t code) const
     {
       const Flat_storage& m = tr_->core.mesh;
+      const Tet_id t = static_cast<Tet_id>(code >> 2);
+      const int i = static_cast<int>(code & 3);
+      if(!m.is_live(t)) return false;
+      if(tr_->dimension() == 2) return i == 3 && !(finite_only && tr_->has_infinite_vertex(t));
+      if(m.neighbor(t, i) < t) return false;
+      return !(finite_only && m.is_ghost(t) && i != 3);
+    }
+    void skip()
+    {
       const std::size_t end = 4 * tr_->slots_of_faces(2);
-      const bool planar = tr_->dimension() == 2;
-      for(; code_ < end; ++code_) {
-        const Tet_id t = code_ >> 2;
-        const int i = static_cast<int>(code_ & 3);
-        if(!m.is_live(t)) continue;
-        if(planar) {
-          if(i != 3 || (finite_only && tr_->has_infinite_vertex(t))) continue;
-          break;
-        }
-        if(m.neighbor(t, i) < t) continue;
-        if(finite_only && m.is_ghost(t) && i != 3) continue;
-        break;
-      }
+      while(code_ < end && !accepts(code_)) ++code_;
       if(code_ < end) facet_ = Facet(Cell_handle(tr_, code_ >> 2), static_cast<int>(code_ & 3));
     }
     const Anchor* tr_ = nullptr;
@@ -284,7 +311,7 @@ public:
   class Edge_iterator_t
   {
   public:
-    typedef std::forward_iterator_tag iterator_category;
+    typedef std::bidirectional_iterator_tag iterator_category;
     typedef Edge value_type;
     typedef std::ptrdiff_t difference_type;
     typedef const Edge* pointer;
@@ -296,31 +323,50 @@ public:
     const Edge* operator->() const { return &edge_; }
     Edge_iterator_t& operator++() { ++code_; skip(); return *this; }
     Edge_iterator_t operator++(int) { Edge_iterator_t old = *this; ++*this; return old; }
+    Edge_iterator_t& operator--()
+    {
+      do {
+        CGAL_precondition(code_ > 0);
+        --code_;
+        // A free slot: none of its six codes is listed.
+        if(!tr_->core.mesh.is_live(static_cast<Tet_id>(code_ / 6))) code_ -= code_ % 6;
+      } while(!accepts(code_));
+      set_edge();
+      return *this;
+    }
+    Edge_iterator_t operator--(int) { Edge_iterator_t old = *this; --*this; return old; }
     friend bool operator==(const Edge_iterator_t& a, const Edge_iterator_t& b) { return a.code_ == b.code_; }
     friend bool operator!=(const Edge_iterator_t& a, const Edge_iterator_t& b) { return a.code_ != b.code_; }
 
   private:
     // In dimension 1 the edges are the segments (c, 0, 1); in dimension 2
     // each triangle reports the edges whose other triangle has a larger index.
-    void skip()
+    bool accepts(std::size_t code) const
     {
       const Flat_storage& m = tr_->core.mesh;
-      const std::size_t end = 6 * tr_->slots_of_faces(1);
       const int dimension = tr_->dimension();
-      for(; code_ < end; ++code_) {
-        const Tet_id t = code_ / 6;
-        if(!m.is_live(t)) { code_ = 6 * t + 5; continue; }
-        const int i = edge_vertex[code_ % 6][0], j = edge_vertex[code_ % 6][1];
-        if(j > dimension) continue;
-        if(finite_only && (m.vertex(t, i) == Fast_Delaunay_triangulation_3_internal::ghost_vertex ||
-                           m.vertex(t, j) == Fast_Delaunay_triangulation_3_internal::ghost_vertex))
-          continue;
-        if(dimension == 1 || (dimension == 2 && m.neighbor(t, 3 - i - j) > t)) break;
-        if(dimension == 3 && tr_->smallest_cell_around_edge(t, i, j) == t) break;
-      }
-      if(code_ < end)
-        edge_ = Edge(Cell_handle(tr_, code_ / 6), edge_vertex[code_ % 6][0], edge_vertex[code_ % 6][1]);
+      const Tet_id t = static_cast<Tet_id>(code / 6);
+      if(!m.is_live(t)) return false;
+      const int i = edge_vertex[code % 6][0], j = edge_vertex[code % 6][1];
+      if(j > dimension) return false;
+      if(finite_only && (m.vertex(t, i) == Fast_Delaunay_triangulation_3_internal::ghost_vertex ||
+                         m.vertex(t, j) == Fast_Delaunay_triangulation_3_internal::ghost_vertex))
+        return false;
+      if(dimension == 1) return true;
+      if(dimension == 2) return m.neighbor(t, 3 - i - j) > t;
+      return dimension == 3 && tr_->smallest_cell_around_edge(t, i, j) == t;
     }
+    void skip()
+    {
+      const std::size_t end = 6 * tr_->slots_of_faces(1);
+      for(; code_ < end; ++code_) {
+        // A free slot: none of its six codes is listed.
+        if(!tr_->core.mesh.is_live(static_cast<Tet_id>(code_ / 6))) { code_ += 5 - code_ % 6; continue; }
+        if(accepts(code_)) break;
+      }
+      if(code_ < end) set_edge();
+    }
+    void set_edge() { edge_ = Edge(Cell_handle(tr_, code_ / 6), edge_vertex[code_ % 6][0], edge_vertex[code_ % 6][1]); }
     const Anchor* tr_ = nullptr;
     std::size_t code_ = 0;
     Edge edge_;
@@ -346,6 +392,9 @@ public:
   typedef Iterator_range<Finite_cell_handles_iterator> Finite_cell_handles;
   typedef Iterator_range<All_vertex_handles_iterator> All_vertex_handles;
   typedef Iterator_range<Finite_vertex_handles_iterator> Finite_vertex_handles;
+  // The points of the finite vertices, in their order (see Handles.h).
+  typedef Fast_Delaunay_triangulation_3_internal::Point_iterator<Finite_vertices_iterator, Point> Point_iterator;
+  typedef Iterator_range<Point_iterator> Points;
 
   typedef Fast_Delaunay_triangulation_3_internal::Insertion_report Insertion_report;
 
@@ -522,6 +571,28 @@ public:
       return c->vertex(li);
     }
     return insert(p, c, could_lock_zone);
+  }
+  // CGAL's insert_outside_affine_hull: p raises the dimension by one (from
+  // -1 to 0 the first point).  The new cells are the cones from p over the
+  // cells of the old dimension, CGAL's construction and the only
+  // triangulation of the new points, so the Delaunay one.  CGAL's
+  // preconditions (dimension < 3, p outside the affine hull) are checked:
+  // std::invalid_argument, the triangulation unchanged.
+  Vertex_handle insert_outside_affine_hull(const Point& p)
+  {
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    if(dimension() == 3)
+      throw std::invalid_argument("Fast_Delaunay_triangulation_3::insert_outside_affine_hull: dimension 3, "
+                                  "every point is in the affine hull");
+    Locate_type lt;
+    int li = 0, lj = 0;
+    const Cell_handle c = locate(p, lt, li, lj);
+    if(lt != OUTSIDE_AFFINE_HULL)
+      throw std::invalid_argument("Fast_Delaunay_triangulation_3::insert_outside_affine_hull: the point is in the "
+                                  "affine hull of the vertices (dimension " + std::to_string(dimension()) + ")");
+    std::vector<Tet_id> around;
+    return insert_below_dimension_3(p, Cell_handle(), &lt, c, li, lj, around);
   }
 
   // The cells incident to the vertex of p after its insertion, as CGAL: for
@@ -924,6 +995,22 @@ public:
   {
     return Fast_Delaunay_triangulation_3_internal::nearest_vertex(*this, p, start);
   }
+  // The finite vertex of c nearest to p, among its dimension() + 1 vertices
+  // (CGAL's cells below dimension 3); on a tie the lower index in c, as
+  // CGAL, whose vertex order in a cell may differ from this one's.
+  Vertex_handle nearest_vertex_in_cell(const Point& p, Cell_handle c) const
+  {
+    CGAL_precondition(dimension() >= 0 && c != Cell_handle());
+    const auto closer = geom_traits().less_distance_to_point_3_object();
+    Vertex_handle nearest;
+    for(int i = 0; i <= std::max(dimension(), 0); ++i) {
+      const Vertex_handle v = c->vertex(i);
+      if(v == Vertex_handle() || is_infinite(v)) continue;
+      if(nearest == Vertex_handle() || closer(p, v->point(), nearest->point())) nearest = v;
+    }
+    CGAL_postcondition(nearest != Vertex_handle());
+    return nearest;
+  }
   bool is_vertex(const Point& p, Vertex_handle& v) const
   {
     Locate_type lt;
@@ -1302,6 +1389,9 @@ public:
     return Finite_vertex_handles(Finite_vertex_handles_iterator(finite_vertices_begin()),
                                  Finite_vertex_handles_iterator(finite_vertices_end()));
   }
+  Point_iterator points_begin() const { return Point_iterator(finite_vertices_begin()); }
+  Point_iterator points_end() const { return Point_iterator(finite_vertices_end()); }
+  Points points() const { return Points(points_begin(), points_end()); }
 
   // ---------------------------------------------------------------- checking
   // Combinatorial validity, positive orientation and the local Delaunay
@@ -1319,11 +1409,15 @@ public:
   // stream's CGAL::IO mode; see operator<< and operator>> below and
   // internal/Triangulation_io.h for the layout.  Points are written with the
   // stream's precision, as CGAL does: set it to 17 for an exact round trip.
+  // The stream is flushed at the end, as CGAL's writer leaves it (its last
+  // line ends with std::endl): a program may read the file back while its
+  // std::ofstream is still open.
   void write(std::ostream& os) const
   {
     if(dimension() == 3) {
       Fast_Delaunay_triangulation_3_internal::write_triangulation_3(
           os, anchor_->core.mesh, [this](Vertex_id v) { return point_of(v); });
+      os.flush();
       return;
     }
     // No cells are stored below dimension 3.  CGAL's triangulation of the
@@ -1333,6 +1427,7 @@ public:
     points.reserve(number_of_vertices());
     for(Vertex_id v = 0; v < vertex_count(); ++v) points.push_back(point_of(v));
     os << Delaunay_triangulation_3<Gt>(points.begin(), points.end());
+    os.flush();
   }
 
   // Replaces the triangulation by the one read from `is`, after checking it

@@ -208,6 +208,32 @@ TEST(Bad_input, PointInsertThrowsAndChangesNothing)
       }
 }
 
+// insert_outside_affine_hull checks CGAL's preconditions: a point in the
+// affine hull (a vertex included) or any point in dimension 3, as well as a
+// NaN or infinite coordinate, throws std::invalid_argument and changes nothing.
+TEST(Bad_input, InsertOutsideAffineHullNeedsAPointOutsideIt)
+{
+  std::vector<Point> line;
+  for(int i = 0; i < 5; ++i) line.emplace_back(i, i, 0);
+  const std::vector<std::pair<Start, std::vector<Point>>> cases = {
+      {{"one point", {Point(0.5, 0.5, 0.5)}}, {Point(0.5, 0.5, 0.5)}},
+      {{"collinear", line}, {Point(2.5, 2.5, 0), Point(-7, -7, 0), Point(4, 4, 0)}},
+      {starts()[2], {Point(0.3, 0.9, 0.5), Point(40, -3, 0.5), starts()[2].points[3]}},
+      {starts()[3], {Point(0.5, 0.5, 0.5), Point(9, 9, 9)}},
+  };
+  for(const auto& c : cases) {
+    Fast_dt tr(c.first.points.begin(), c.first.points.end());
+    const Snapshot before(tr);
+    std::vector<Point> bad = c.second;
+    bad.push_back(Point(std::numeric_limits<double>::quiet_NaN(), 1, 2));
+    for(const Point& p : bad) {
+      SCOPED_TRACE(std::string(c.first.name) + ", point " + std::to_string(p.x()));
+      EXPECT_THROW(tr.insert_outside_affine_hull(p), std::invalid_argument);
+      expect_unchanged(tr, before);
+    }
+  }
+}
+
 TEST(Bad_input, UsableAfterAFailedInsertion)
 {
   // After each failure, the good points still give CGAL's triangulation.

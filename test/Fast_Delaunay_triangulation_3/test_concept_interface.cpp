@@ -6,9 +6,11 @@
 // other and to independent facts (Euler's relation, distinct input points).
 // The tests at the end compare the two triangulations of the same points.
 //
-// Only dimension 3 is exercised by the typed tests, except for the empty
-// triangulation and insertion; test_lower_dimensions.cpp runs the conventions
-// of dimensions 0 to 2 on both triangulations.
+// Most typed tests exercise dimension 3; the empty triangulation, insertion,
+// backward iteration, points(), insert_outside_affine_hull,
+// nearest_vertex_in_cell and the file flush run in every dimension, and
+// test_lower_dimensions.cpp runs the conventions of dimensions 0 to 2 on both
+// triangulations.
 #include "triangulation_checks.h"
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
@@ -17,6 +19,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
+#include <fstream>
 #include <iterator>
 #include <map>
 #include <set>
@@ -721,6 +725,256 @@ TYPED_TEST(Concept, PointsAndTetrahedraOfCells)
     EXPECT_EQ(orientation(t[0], t[1], t[2], t[3]), CGAL::POSITIVE);
   }
   for(auto v : tr.finite_vertex_handles()) EXPECT_TRUE(tr.point(v) == v->point());
+}
+
+// ---------------------------------------------------------------- backward iteration, points(), affine hull
+// Inputs of every dimension, -1 to 3, for the tests that run in all of them.
+std::vector<Named_points> inputs_of_every_dimension()
+{
+  std::vector<Named_points> all = inputs();
+  all.push_back({"empty", {}});
+  all.push_back({"one point twice", {Point(1, 2, 3), Point(1, 2, 3)}});
+  std::vector<Point> line, plane;
+  for(int i = 0; i < 6; ++i) line.emplace_back(i, 2 * i, -i);
+  for(int i = 0; i < 4; ++i)
+    for(int j = 0; j < 4; ++j) plane.emplace_back(i, j, i + j); // cocircular squares
+  all.push_back({"collinear", line});
+  all.push_back({"coplanar grid", plane});
+  return all;
+}
+
+// Walking from last back to first with prefix and with postfix -- meets the
+// elements of the forward walk in reverse order; postfix -- returns the old
+// position.  `key` reads the element at an iterator.
+template <class Iterator, class Key>
+void expect_backward_is_reversed_forward(Iterator first, Iterator last, Key key, const char* what)
+{
+  SCOPED_TRACE(what);
+  static_assert(std::is_convertible<typename std::iterator_traits<Iterator>::iterator_category,
+                                    std::bidirectional_iterator_tag>::value,
+                "a bidirectional iterator, as CGAL's");
+  typedef decltype(key(first)) Element;
+  std::vector<Element> forward, prefix, postfix;
+  for(Iterator it = first; it != last; ++it) forward.push_back(key(it));
+  for(Iterator it = last; it != first;) {
+    --it;
+    prefix.push_back(key(it));
+  }
+  for(Iterator it = last; it != first;) {
+    const Iterator old = it--;
+    EXPECT_TRUE(++Iterator(it) == old);
+    postfix.push_back(key(it));
+  }
+  std::reverse(prefix.begin(), prefix.end());
+  std::reverse(postfix.begin(), postfix.end());
+  EXPECT_EQ(prefix.size(), forward.size());
+  EXPECT_TRUE(prefix == forward);
+  EXPECT_TRUE(postfix == forward);
+}
+
+// CGAL's iterators over vertices, cells, facets and edges, the handle
+// iterators of its ranges and its point iterator are bidirectional
+// (_test_cls_iterator walks them from end() to begin()).
+TYPED_TEST(Concept, EveryIteratorRunsBackwards)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  for(const Named_points& input : inputs_of_every_dimension()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    const auto cell = [](auto it) { return Cell_handle(it); };
+    const auto vertex = [](auto it) { return Vertex_handle(it); };
+    const auto element = [](auto it) { return *it; };
+    const auto edge = [](auto it) { return std::make_tuple(it->first, it->second, it->third); };
+    const auto point = [](auto it) { return point_key(*it); };
+    expect_backward_is_reversed_forward(tr.all_cells_begin(), tr.all_cells_end(), cell, "all cells");
+    expect_backward_is_reversed_forward(tr.cells_begin(), tr.cells_end(), cell, "cells");
+    expect_backward_is_reversed_forward(tr.finite_cells_begin(), tr.finite_cells_end(), cell, "finite cells");
+    expect_backward_is_reversed_forward(tr.all_vertices_begin(), tr.all_vertices_end(), vertex, "all vertices");
+    expect_backward_is_reversed_forward(tr.finite_vertices_begin(), tr.finite_vertices_end(), vertex,
+                                        "finite vertices");
+    expect_backward_is_reversed_forward(tr.all_facets_begin(), tr.all_facets_end(), element, "all facets");
+    expect_backward_is_reversed_forward(tr.finite_facets_begin(), tr.finite_facets_end(), element,
+                                        "finite facets");
+    expect_backward_is_reversed_forward(tr.all_edges_begin(), tr.all_edges_end(), edge, "all edges");
+    expect_backward_is_reversed_forward(tr.finite_edges_begin(), tr.finite_edges_end(), edge, "finite edges");
+    expect_backward_is_reversed_forward(tr.all_cell_handles().begin(), tr.all_cell_handles().end(), element,
+                                        "all cell handles");
+    expect_backward_is_reversed_forward(tr.finite_cell_handles().begin(), tr.finite_cell_handles().end(), element,
+                                        "finite cell handles");
+    expect_backward_is_reversed_forward(tr.all_vertex_handles().begin(), tr.all_vertex_handles().end(), element,
+                                        "all vertex handles");
+    expect_backward_is_reversed_forward(tr.finite_vertex_handles().begin(), tr.finite_vertex_handles().end(),
+                                        element, "finite vertex handles");
+    expect_backward_is_reversed_forward(tr.points_begin(), tr.points_end(), point, "points");
+    // The counts are those of the forward walks checked elsewhere: a
+    // backward walk that stopped early would have failed above.
+    EXPECT_EQ(count(tr.finite_vertices_begin(), tr.finite_vertices_end()), tr.number_of_vertices());
+  }
+}
+
+// points() lists the points of the finite vertices in their order, each
+// distinct input point once.
+TYPED_TEST(Concept, PointsAreThoseOfTheFiniteVertices)
+{
+  for(const Named_points& input : inputs_of_every_dimension()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    std::vector<Point_key> of_vertices, of_points, of_range;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) of_vertices.push_back(point_key(v->point()));
+    for(typename TypeParam::Point_iterator p = tr.points_begin(); p != tr.points_end(); ++p) {
+      of_points.push_back(point_key(*p));
+      EXPECT_EQ(p->x(), (*p).x());
+    }
+    const typename TypeParam::Points range = tr.points();
+    EXPECT_TRUE(range.first == tr.points_begin());
+    EXPECT_TRUE(range.second == tr.points_end());
+    for(const Point& p : range) of_range.push_back(point_key(p));
+    EXPECT_TRUE(of_points == of_vertices);
+    EXPECT_TRUE(of_range == of_vertices);
+    std::sort(of_points.begin(), of_points.end());
+    EXPECT_TRUE(of_points == distinct_point_keys(input.points));
+  }
+}
+
+// CGAL's insert_outside_affine_hull: the point raises the dimension by
+// one, and the triangulation is the Delaunay triangulation of all the
+// points (the one CGAL builds from them at once).
+TYPED_TEST(Concept, InsertOutsideAffineHullRaisesTheDimension)
+{
+  struct Case
+  {
+    std::vector<Point> before;
+    Point outside;
+  };
+  std::vector<Point> line, plane;
+  for(int i = 0; i < 6; ++i) line.emplace_back(i, 2 * i, -i);
+  for(int i = 0; i < 4; ++i)
+    for(int j = 0; j < 4; ++j) plane.emplace_back(i, j, 0);
+  const std::vector<Case> cases = {
+      {{}, Point(1, 2, 3)},
+      {{Point(1, 2, 3)}, Point(0, 0, 0)},
+      {{Point(0, 0, 0), Point(1, 0, 0)}, Point(0, 1, 0)},
+      {{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)}, Point(0, 0, 1)},
+      {line, Point(0, 0, 1)},
+      {line, Point(3, 6, -2.5)},
+      {plane, Point(0, 0, 1)},
+      {plane, Point(1.5, 1.5, -1)}, // above the centre of the cocircular grid squares
+      {plane, Point(9, -4, 1e-9)},
+  };
+  for(const Case& c : cases) {
+    SCOPED_TRACE(c.before.size());
+    TypeParam tr(c.before.begin(), c.before.end());
+    const int dimension = tr.dimension();
+    const typename TypeParam::Vertex_handle v = tr.insert_outside_affine_hull(c.outside);
+    EXPECT_TRUE(v->point() == c.outside);
+    EXPECT_EQ(tr.dimension(), dimension + 1);
+    std::vector<Point> all = c.before;
+    all.push_back(c.outside);
+    expect_same_as_cgal(tr, Cgal_dt(all.begin(), all.end()));
+  }
+}
+
+// nearest_vertex_in_cell: a finite vertex of the cell, and none of the
+// cell's finite vertices is strictly nearer (CGAL's cells below dimension 3
+// included: triangles and segments; in dimension 0 CGAL 5.5 reads
+// c->vertex(1), a null handle, so that dimension is left out).
+TYPED_TEST(Concept, NearestVertexInCellIsTheNearestOfItsFiniteVertices)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  const std::vector<Point> queries = to_points<Point>(make_points("uniform", 5, 43));
+  for(const Named_points& input : inputs_of_every_dimension()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    if(tr.dimension() < 1) continue;
+    std::vector<Cell_handle> cells = lower_dimensional_cells(tr);
+    for(auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c) cells.push_back(c);
+    const K::Less_distance_to_point_3 closer = tr.geom_traits().less_distance_to_point_3_object();
+    for(const Cell_handle c : cells) {
+      for(const Point& q : queries) {
+        const Vertex_handle v = tr.nearest_vertex_in_cell(q, c);
+        ASSERT_TRUE(v != Vertex_handle());
+        EXPECT_FALSE(tr.is_infinite(v));
+        EXPECT_TRUE(c->has_vertex(v));
+        for(int i = 0; i <= tr.dimension(); ++i) {
+          if(!tr.is_infinite(c->vertex(i))) {
+            EXPECT_FALSE(closer(q, c->vertex(i)->point(), v->point()));
+          }
+        }
+      }
+    }
+  }
+}
+
+// The stream is flushed when operator<< returns, as CGAL's writer leaves
+// it: CGAL's simple_triangulation_3 reads its file back while the
+// std::ofstream that wrote it is still open.
+TYPED_TEST(Concept, WrittenFileIsReadableBeforeTheStreamCloses)
+{
+  int k = 0;
+  for(const Named_points& input : inputs_of_every_dimension()) {
+    SCOPED_TRACE(input.name);
+    const TypeParam tr(input.points.begin(), input.points.end());
+    const std::string path = ::testing::TempDir() + "fdt3_flush_" + std::to_string(k++) + "_" +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt";
+    std::ofstream out(path);
+    out.precision(17);
+    out << tr;
+    std::ifstream in(path);
+    TypeParam back;
+    in >> back;
+    EXPECT_FALSE(in.fail());
+    EXPECT_TRUE(back.is_valid());
+    EXPECT_EQ(back.dimension(), tr.dimension());
+    EXPECT_EQ(back.number_of_vertices(), tr.number_of_vertices());
+    EXPECT_EQ(back.number_of_cells(), tr.number_of_cells());
+    EXPECT_TRUE(finite_vertex_keys(back) == finite_vertex_keys(tr));
+    out.close();
+    std::remove(path.c_str());
+  }
+}
+
+// As CGAL's Delaunay_triangulation_3: neither regular nor periodic.
+TYPED_TEST(Concept, TagsAreThoseOfADelaunayTriangulation)
+{
+  static_assert(std::is_same<typename TypeParam::Weighted_tag, CGAL::Tag_false>::value, "not weighted");
+  static_assert(std::is_same<typename TypeParam::Periodic_tag, CGAL::Tag_false>::value, "not periodic");
+  static_assert(std::is_void<typename TypeParam::Lock_data_structure>::value, "no locks when sequential");
+}
+
+// The handle conversions and comparisons of CGAL's test suite
+// (_test_cls_iterator.h, _test_cls_circulator.h): iterators to handles,
+// handles against iterators, a default circulator against 0.
+TYPED_TEST(Concept, IteratorsConvertToAndCompareWithHandles)
+{
+  typedef typename TypeParam::Vertex_handle Vertex_handle;
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  const std::vector<Point> points = to_points<Point>(make_points("uniform", 40, 41));
+  const TypeParam tr(points.begin(), points.end());
+  const Vertex_handle first = tr.vertices_begin();
+  EXPECT_TRUE(tr.is_infinite(first));
+  EXPECT_TRUE(first == tr.all_vertices_begin());
+  EXPECT_FALSE(first != tr.all_vertices_begin());
+  // (CGAL's handle ranges dereference to an iterator that converts to the handle.)
+  Vertex_handle v = *tr.all_vertex_handles().second;
+  EXPECT_TRUE(v == tr.all_vertices_end());
+  v = *tr.finite_vertex_handles().second;
+  EXPECT_TRUE(v == Vertex_handle(tr.finite_vertices_end()));
+  Cell_handle ch = *tr.all_cell_handles().first;
+  EXPECT_TRUE(ch == tr.all_cells_begin());
+  ch = *tr.finite_cell_handles().second;
+  EXPECT_TRUE(ch == Cell_handle(tr.finite_cells_end()));
+  const Cell_handle c = tr.finite_cells_begin();
+  EXPECT_FALSE(tr.is_infinite(c));
+  typename TypeParam::Facet_circulator none;
+  EXPECT_TRUE(none == 0);
+  typename TypeParam::Cell_circulator around = tr.incident_cells(*tr.finite_edges_begin());
+  const Cell_handle at = around;
+  EXPECT_TRUE(at->has_vertex(tr.finite_edges_begin()->first->vertex(tr.finite_edges_begin()->second)));
+  std::vector<Vertex_handle> vertices;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) vertices.push_back(v);
+  EXPECT_EQ(vertices.size(), tr.number_of_vertices());
 }
 
 // Beyond CGAL 5.5, whose moved-from triangulation needs clear() first: a

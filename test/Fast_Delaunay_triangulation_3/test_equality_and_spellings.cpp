@@ -166,6 +166,57 @@ TEST(Spellings, ParallelTagWithSpatialLockGrid)
   more.emplace_back(0.5, 0.5, 1.5);
   EXPECT_TRUE(fast == Cgal_dt(more.begin(), more.end()));
 }
+
+// The lock data structure left to its default, as CGAL's examples spell the
+// parallel triangulation (parallel_insertion_in_delaunay_3.cpp): CGAL's own
+// choice for a Parallel_tag data structure, Spatial_lock_grid_3 with
+// blocking priorities, constructible from a box and a resolution.
+TEST(Spellings, ParallelTagWithTheDefaultLockDataStructure)
+{
+#if defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "TBB's scheduler is not instrumented for ThreadSanitizer";
 #endif
+  typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
+                                               CGAL::Delaunay_triangulation_cell_base_3<K>, CGAL::Parallel_tag>
+      Parallel_tds;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Parallel_tds> Parallel_fast_dt;
+  typedef CGAL::Delaunay_triangulation_3<K, Parallel_tds> Parallel_cgal_dt;
+  static_assert(std::is_same<Parallel_fast_dt::Lock_data_structure, Parallel_cgal_dt::Lock_data_structure>::value,
+                "CGAL's default lock data structure");
+  static_assert(std::is_same<Parallel_fast_dt::Lock_data_structure,
+                             CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>>::value,
+                "CGAL's default lock data structure");
+  const std::vector<Point> points = input("uniform", 1000);
+  Parallel_fast_dt::Lock_data_structure locking_ds(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 50);
+  Parallel_fast_dt fast(points.begin(), points.end(), &locking_ds);
+  EXPECT_EQ(fast.get_lock_data_structure(), &locking_ds);
+  ASSERT_TRUE(fast.is_valid());
+  EXPECT_TRUE(fast == Cgal_dt(points.begin(), points.end()));
+  Parallel_fast_dt later;
+  EXPECT_EQ(later.get_lock_data_structure(), nullptr);
+  later.set_lock_data_structure(&locking_ds);
+  EXPECT_EQ(later.get_lock_data_structure(), &locking_ds);
+}
+#endif
+
+// Sequential, CGAL has no lock data structure (void), whatever the location
+// policy; given one explicitly, both take it.
+TEST(Spellings, SequentialLockDataStructureIsCgals)
+{
+  static_assert(std::is_void<Fast_dt::Lock_data_structure>::value, "void, as CGAL's");
+  static_assert(std::is_same<CGAL::Fast_Delaunay_triangulation_3<K, CGAL::Fast_location>::Lock_data_structure,
+                             CGAL::Delaunay_triangulation_3<K, CGAL::Fast_location>::Lock_data_structure>::value,
+                "as CGAL's");
+  struct Own_lock {};
+  static_assert(std::is_same<CGAL::Fast_Delaunay_triangulation_3<K, CGAL::Default, CGAL::Default,
+                                                                 Own_lock>::Lock_data_structure,
+                             Own_lock>::value,
+                "the argument when given");
+  static_assert(std::is_same<Cgal_dt::Lock_data_structure, Fast_dt::Lock_data_structure>::value, "as CGAL's");
+  const std::vector<Point> points = input("grid", 27);
+  const Fast_dt fast(points.begin(), points.end(), nullptr);
+  EXPECT_EQ(fast.get_lock_data_structure(), nullptr);
+  EXPECT_TRUE(fast == Cgal_dt(points.begin(), points.end()));
+}
 
 } // namespace test_equality_and_spellings

@@ -43,8 +43,13 @@ the last inserted point or the hint): `Fast_location` or `Compact_location`,
 given third or, as in `Delaunay_triangulation_3<K, Fast_location>`, second;
 the typedef `Location_policy` names it. Default: `Default`.
 
-\tparam Lock_data_structure_ is accepted and ignored: insertion is sequential.
-Default: `Default`.
+\tparam Lock_data_structure_ is accepted, and the typedef
+`Lock_data_structure` is CGAL's: with a `Parallel_tag` data structure (and
+TBB), `Spatial_lock_grid_3<Tag_priority_blocking>` when the argument is
+`Default`, otherwise `void` when `Default`; the argument when given. The
+constructors and `set_lock_data_structure()` store a pointer to it, which
+`get_lock_data_structure()` returns; nothing is locked (the parallel engine
+partitions space instead). Default: `Default`.
 
 <b>Differences from `Delaunay_triangulation_3`</b>
 
@@ -87,9 +92,16 @@ Default: `Default`.
   slots of deleted cells are reused.
 - `Vertex::point()` returns the point by value; the point of the infinite
   vertex is `Point(0, 0, 0)`.
-- All iterators are forward iterators (those of `Delaunay_triangulation_3` are
-  bidirectional). They dereference to a `Vertex` or `Cell` object stored
-  inside the iterator, so `&*it` is valid only as long as `it` is unchanged.
+- All iterators are bidirectional, as those of `Delaunay_triangulation_3`.
+  The cell and vertex iterators dereference to a `Vertex` or `Cell` object
+  stored inside the iterator, so `&*it` is valid only as long as `it` is
+  unchanged, and a `std::reverse_iterator` over them would hand out a
+  reference into a temporary copy: walk backwards with `--` (CGAL's facet and
+  edge iterators store their `Facet` and `Edge` the same way). A
+  `Point_iterator` yields points by value.
+- There is no `tds()` and no `Triangulation_data_structure` / `Tds` typedef:
+  the combinatorics are the flat arrays, not a
+  `Triangulation_data_structure_3`.
 - Finite vertices are enumerated in the order of the vertex ids, which is the
   insertion order chosen by the spatial sort, not the order of the input.
 - A point with a NaN or infinite coordinate makes `insert()` throw
@@ -190,8 +202,23 @@ Edge `(i, j)` of cell `c`: the edge between `c->vertex(i)` and `c->vertex(j)`.
 typedef Triple<Cell_handle, int, int> Edge;
 
 /*!
-The enum of `Triangulation_3`, declared for source compatibility; no member
-function uses it yet.
+`Tag_false`, as in `Delaunay_triangulation_3`: the points are not weighted.
+*/
+typedef Tag_false Weighted_tag;
+
+/*!
+`Tag_false`, as in `Delaunay_triangulation_3`: the triangulation is not periodic.
+*/
+typedef Tag_false Periodic_tag;
+
+/*!
+The type of the lock data structure, as CGAL chooses it (see the template
+parameter `Lock_data_structure_`).
+*/
+typedef unspecified_type Lock_data_structure;
+
+/*!
+The enum of `Triangulation_3`, with its meaning there (`locate()`).
 */
 enum Locate_type { VERTEX = 0, EDGE, FACET, CELL, OUTSIDE_CONVEX_HULL, OUTSIDE_AFFINE_HULL };
 
@@ -209,7 +236,7 @@ typedef unspecified_type Insertion_report;
 /// @}
 
 /// \name Iterators and Ranges
-/// All iterators are forward iterators. The cell and vertex iterators
+/// All iterators are bidirectional, as CGAL's. The cell and vertex iterators
 /// dereference to `Cell` and `Vertex` and convert to `Cell_handle` and
 /// `Vertex_handle`; the facet and edge iterators dereference to `Facet` and
 /// `Edge`; the `*_handles_iterator` types dereference to handles.
@@ -341,6 +368,16 @@ typedef Iterator_range<All_vertex_handles_iterator> All_vertex_handles;
 */
 typedef Iterator_range<Finite_vertex_handles_iterator> Finite_vertex_handles;
 
+/*!
+The points of the finite vertices, in their order, as `Triangulation_3`'s
+`Point_iterator`; bidirectional, its `operator*` returns the point by value.
+*/
+typedef unspecified_type Point_iterator;
+
+/*!
+*/
+typedef Iterator_range<Point_iterator> Points;
+
 /// @}
 
 /// \name Creation
@@ -468,6 +505,16 @@ Vertex_handle insert(const Point& p, Cell_handle hint);
 Same as `insert(p)`; the hint is ignored.
 */
 Vertex_handle insert(const Point& p, Vertex_handle hint);
+
+/*!
+`Triangulation_3::insert_outside_affine_hull()`: `p` raises the dimension by
+one, each cell becoming the cone from `p` over it, which is the Delaunay
+triangulation of the new point set. Returns the vertex of `p`. Throws
+`std::invalid_argument` without change if `dimension() == 3`, if `p` lies in
+the affine hull of the vertices (CGAL's preconditions) or has a NaN or
+infinite coordinate.
+*/
+Vertex_handle insert_outside_affine_hull(const Point& p);
 
 /// @}
 
@@ -736,6 +783,15 @@ All_vertex_handles all_vertex_handles() const;
 /*!
 */
 Finite_vertex_handles finite_vertex_handles() const;
+/*!
+*/
+Point_iterator points_begin() const;
+/*!
+*/
+Point_iterator points_end() const;
+/*!
+*/
+Points points() const;
 
 /// @}
 
@@ -770,7 +826,9 @@ bool is_valid(bool verbose = false, int level = 0) const;
 Writes the triangulation as `Triangulation_3`'s `operator<<` writes the same
 triangulation (ASCII or binary after the stream's `CGAL::IO` mode; points
 with the stream's precision). Below dimension 3 the cells written are those
-of a `Delaunay_triangulation_3` built from the vertices.
+of a `Delaunay_triangulation_3` built from the vertices. The stream is
+flushed at the end, as CGAL's writer leaves it (its last line ends with
+`std::endl`), so the file can be read back while it is still open.
 */
 void write(std::ostream& os) const;
 

@@ -178,12 +178,16 @@ private:
 
 // Iterates over indices [0, end) that satisfy Tr's filter `Accept`, and
 // dereferences as its handle does (to the vertex or cell, as CGAL's
-// iterators); converts to the handle.
+// iterators); converts to the handle.  Bidirectional, as CGAL's iterators
+// over its containers: decrementing the first position is undefined, as
+// there.  The element lives in the iterator (its handle's facade), so a
+// std::reverse_iterator, which dereferences a temporary copy, would hand out
+// a dangling reference: walk backwards with --.
 template <class Handle, class Index, class Accept>
 class Filtered_index_iterator
 {
 public:
-  typedef std::forward_iterator_tag iterator_category;
+  typedef std::bidirectional_iterator_tag iterator_category;
   typedef decltype(*std::declval<const Handle&>()) reference;
   typedef typename std::remove_reference<reference>::type value_type;
   typedef value_type* pointer;
@@ -212,6 +216,22 @@ public:
     ++*this;
     return old;
   }
+  Filtered_index_iterator& operator--()
+  {
+    Index id = handle_.index();
+    do {
+      CGAL_precondition(id > 0);
+      --id;
+    } while(!Accept()(*handle_.owner(), id));
+    handle_ = Handle(handle_.owner(), id);
+    return *this;
+  }
+  Filtered_index_iterator operator--(int)
+  {
+    Filtered_index_iterator old = *this;
+    --*this;
+    return old;
+  }
   friend bool operator==(const Filtered_index_iterator& a, const Filtered_index_iterator& b)
   {
     return a.handle_.index() == b.handle_.index();
@@ -234,12 +254,12 @@ private:
 };
 
 // Adapts an iterator that converts to a handle into one that yields handles
-// (CGAL's *_handles() ranges).
+// (CGAL's *_handles() ranges); bidirectional when Base is.
 template <class Base, class Handle>
 class Handle_iterator
 {
 public:
-  typedef std::forward_iterator_tag iterator_category;
+  typedef typename std::iterator_traits<Base>::iterator_category iterator_category;
   typedef Handle value_type;
   typedef std::ptrdiff_t difference_type;
   typedef const Handle* pointer;
@@ -252,8 +272,42 @@ public:
   Arrow operator->() const { return Arrow{Handle(base_)}; }
   Handle_iterator& operator++() { ++base_; return *this; }
   Handle_iterator operator++(int) { Handle_iterator old = *this; ++base_; return old; }
+  Handle_iterator& operator--() { --base_; return *this; }
+  Handle_iterator operator--(int) { Handle_iterator old = *this; --base_; return old; }
   friend bool operator==(const Handle_iterator& a, const Handle_iterator& b) { return a.base_ == b.base_; }
   friend bool operator!=(const Handle_iterator& a, const Handle_iterator& b) { return a.base_ != b.base_; }
+
+private:
+  Base base_;
+};
+
+// The points of the vertices of a vertex iterator (CGAL's Point_iterator,
+// bidirectional).  A point is assembled from the flat coordinate array, so
+// it is yielded by value: `const Point& p = *it` and range-for loops bind it
+// as they would CGAL's reference, and std::reverse_iterator works; `&*it`
+// does not.
+template <class Base, class Point>
+class Point_iterator
+{
+public:
+  typedef std::bidirectional_iterator_tag iterator_category;
+  typedef Point value_type;
+  typedef std::ptrdiff_t difference_type;
+  typedef const Point* pointer;
+  typedef Point reference;
+
+  Point_iterator() = default;
+  explicit Point_iterator(Base base) : base_(base) {}
+  Point operator*() const { return base_->point(); }
+  struct Arrow { Point p; const Point* operator->() const { return &p; } };
+  Arrow operator->() const { return Arrow{base_->point()}; }
+  Point_iterator& operator++() { ++base_; return *this; }
+  Point_iterator operator++(int) { Point_iterator old = *this; ++base_; return old; }
+  Point_iterator& operator--() { --base_; return *this; }
+  Point_iterator operator--(int) { Point_iterator old = *this; --base_; return old; }
+  friend bool operator==(const Point_iterator& a, const Point_iterator& b) { return a.base_ == b.base_; }
+  friend bool operator!=(const Point_iterator& a, const Point_iterator& b) { return a.base_ != b.base_; }
+  const Base& base() const { return base_; }
 
 private:
   Base base_;
