@@ -1512,8 +1512,12 @@ private:
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
     if(v->point() == p) return v;
-    Vertex_handle w;
-    if(number_of_vertices() > 1 && is_vertex(p, w)) {
+    // As CGAL, p is located from v's cell: moves are mostly short.
+    Locate_type lt;
+    int li, lj;
+    const Cell_handle c = number_of_vertices() > 1 ? locate(p, lt, li, lj, v) : Cell_handle();
+    if(c != Cell_handle() && lt == VERTEX) {
+      const Vertex_handle w = c->vertex(li);
       if(remove_on_collision) remove(v);
       return w;
     }
