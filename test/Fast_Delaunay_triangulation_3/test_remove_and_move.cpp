@@ -95,9 +95,11 @@ Point random_point(std::mt19937_64& rng, double scale = 1)
 // Random steps on `points`: insert a point of `points`, remove a vertex or
 // move one (a little, far, or onto another vertex), checked against CGAL
 // after each step.
-void random_steps(const std::vector<Point>& points, int steps, std::uint64_t seed, bool on_grid)
+void random_steps(const std::vector<Point>& points, int steps, std::uint64_t seed, bool on_grid,
+                  bool sub_determinants = false)
 {
   Tracked t;
+  t.tr.set_sub_determinants(sub_determinants);
   for(const Point& p : points) t.insert(p);
   t.remember_infos();
   t.check("initial");
@@ -154,6 +156,17 @@ TEST(Remove, RandomPointsInsertRemoveMove)
 }
 
 TEST(Remove, GridInsertRemoveMove) { random_steps(grid(5), 120, 13, true); }
+
+// The new tetrahedra get their cached sub-determinants (is_valid's Delaunay
+// checks do not read them; later insertions do).
+TEST(Remove, WithSubDeterminants)
+{
+  std::mt19937_64 rng(26);
+  std::vector<Point> points;
+  for(int i = 0; i < 100; ++i) points.push_back(random_point(rng));
+  random_steps(points, 80, 27, false, true);
+  random_steps(grid(4), 60, 28, true, true);
+}
 
 TEST(Remove, CosphericalInsertRemoveMove)
 {
@@ -408,4 +421,36 @@ TEST(Remove, DeadRecordsAfterwards)
   file >> read_by_cgal;
   ASSERT_TRUE(read_by_cgal.is_valid());
   EXPECT_TRUE(finite_cell_keys(read_by_cgal) == finite_cell_keys(t.tr));
+}
+
+// The partitioned engine inserts after removals (dead records among the ids
+// it partitions).
+TEST(Remove, ParallelInsertionAfterRemovals)
+{
+  Tracked t;
+  t.tr.set_number_of_threads(2);
+  std::mt19937_64 rng(29);
+  std::vector<Point> first;
+  for(int i = 0; i < 3000; ++i) first.push_back(random_point(rng));
+  t.tr.insert(first.begin(), first.end());
+  for(const Point& p : first) {
+    Vertex_handle v;
+    ASSERT_TRUE(t.tr.is_vertex(p, v));
+    t.vertices.push_back({v, p});
+  }
+  for(int k = 0; k < 300; ++k) {
+    const std::size_t victim = rng() % t.vertices.size();
+    t.tr.remove(t.vertices[victim].first);
+    t.forget(victim);
+  }
+  std::vector<Point> more;
+  for(int i = 0; i < 3000; ++i) more.push_back(random_point(rng));
+  t.tr.insert(more.begin(), more.end());
+  for(const Point& p : more) {
+    Vertex_handle v;
+    ASSERT_TRUE(t.tr.is_vertex(p, v));
+    t.vertices.push_back({v, p});
+  }
+  t.remember_infos();
+  t.check("parallel insertion after removals");
 }

@@ -151,26 +151,30 @@ inline bool fill_hole(Flat_storage& m, const Removal_hole& hole, const Flat_stor
                       const std::vector<Vertex_id>& global_of_small, std::vector<Tet_id>& new_cells)
 {
   using vertex_removal_detail::Keyed_facet;
-  std::vector<Keyed_facet> facets;
-  facets.reserve(4 * small.live_tets);
-  for(Tet_id s = 0; s < small.number_of_slots(); ++s) {
-    if(!small.is_live(s)) continue;
-    for(int f = 0; f < 4; ++f) facets.push_back({oriented_facet_key(small, s, f, &global_of_small), facet_code(s, f)});
-  }
-  std::sort(facets.begin(), facets.end());
+  // Each small facet is looked up among the boundary facets (a few dozen),
+  // sorted by key; an oriented facet is in each list at most once.
+  std::vector<Keyed_facet> boundary;
+  boundary.reserve(hole.boundary.size());
+  for(std::size_t b = 0; b < hole.boundary.size(); ++b) boundary.push_back({hole.boundary[b].key, Facet_code(b)});
+  std::sort(boundary.begin(), boundary.end());
 
   // boundary_of[code of a small facet]: the hole's boundary facet it is, or -1.
   std::vector<int> boundary_of(4 * small.number_of_slots(), -1);
   std::vector<Tet_id> inside; // small cells of the hole
   std::vector<char> reached(small.number_of_slots(), 0);
-  for(std::size_t b = 0; b < hole.boundary.size(); ++b) {
-    const Keyed_facet probe{hole.boundary[b].key, 0};
-    const auto found = std::lower_bound(facets.begin(), facets.end(), probe);
-    if(found == facets.end() || found->key != probe.key) return false;
-    boundary_of[found->code] = static_cast<int>(b);
-    const Tet_id s = tet_of(found->code);
-    if(!reached[s]) { reached[s] = 1; inside.push_back(s); }
+  std::size_t found = 0;
+  for(Tet_id s = 0; s < small.number_of_slots(); ++s) {
+    if(!small.is_live(s)) continue;
+    for(int f = 0; f < 4; ++f) {
+      const Keyed_facet probe{oriented_facet_key(small, s, f, &global_of_small), 0};
+      const auto match = std::lower_bound(boundary.begin(), boundary.end(), probe);
+      if(match == boundary.end() || match->key != probe.key) continue;
+      boundary_of[facet_code(s, f)] = static_cast<int>(match->code);
+      ++found;
+      if(!reached[s]) { reached[s] = 1; inside.push_back(s); }
+    }
   }
+  if(found != hole.boundary.size()) return false;
   for(std::size_t k = 0; k < inside.size(); ++k)
     for(int f = 0; f < 4; ++f) {
       if(boundary_of[facet_code(inside[k], f)] >= 0) continue;
