@@ -1512,18 +1512,18 @@ private:
     const double xyz[3] = {p.x(), p.y(), p.z()};
     Core::check_finite(xyz, 1);
     if(v->point() == p) return v;
-    // As CGAL, p is located from v's cell: moves are mostly short.
-    Locate_type lt;
-    int li, lj;
-    const Cell_handle c = number_of_vertices() > 1 ? locate(p, lt, li, lj, v) : Cell_handle();
-    if(c != Cell_handle() && lt == VERTEX) {
-      const Vertex_handle w = c->vertex(li);
-      if(remove_on_collision) remove(v);
-      return w;
+    if(!remove_on_collision) {
+      // As CGAL, p is located from v's cell: moves are mostly short.
+      Locate_type lt;
+      int li, lj;
+      const Cell_handle c = number_of_vertices() > 1 ? locate(p, lt, li, lj, v) : Cell_handle();
+      if(c != Cell_handle() && lt == VERTEX) return c->vertex(li);
     }
-    anchor_->core.move(v.index(), xyz, removal_start(v), made);
+    // move(): a point already there is found by the insertion, after v's
+    // removal, which is then all that happens (one walk fewer).
+    const Vertex_id moved = anchor_->core.move(v.index(), xyz, removal_start(v), made);
     anchor_->cells_made(made);
-    return v;
+    return Vertex_handle(anchor_.get(), moved);
   }
 
   // Dimension 3: the kernel's insertion from `start`; below, CGAL's from

@@ -238,6 +238,26 @@ TEST(Remove, FlatLinkOnTheHull)
   EXPECT_EQ(t.tr.dimension(), 3);
 }
 
+// Apexes over the top face of a 3x3x3 grid, random and over grid points
+// (cospherical ties): the link is flat or not, both fills against CGAL.
+TEST(Remove, ApexesOverAGridFace)
+{
+  std::mt19937_64 rng(30);
+  std::uniform_real_distribution<double> u(0, 2);
+  std::vector<Point> apexes = {Point(1, 1, 3), Point(0, 0, 2.5), Point(2, 1, 4), Point(1, 1, 2.25)};
+  for(int k = 0; k < 16; ++k) apexes.emplace_back(u(rng), u(rng), 2 + u(rng) / 4);
+  for(const Point& apex : apexes) {
+    Tracked t;
+    for(const Point& p : grid(3)) t.insert(p);
+    const Vertex_handle v = t.insert(apex);
+    t.remember_infos();
+    t.tr.remove(v);
+    t.forget(t.vertices.size() - 1);
+    t.check("apex removed");
+    if(::testing::Test::HasFatalFailure()) return;
+  }
+}
+
 // Coplanar points (dimension 2) and fewer than five points: removals and
 // moves in dimensions -1 to 3, up and down.
 TEST(Remove, LowerDimensions)

@@ -327,20 +327,22 @@ public:
     hint_ = new_cells.front();
   }
 
-  // Moves live vertex v to p (finite, and no vertex), keeping its id: v is
-  // removed, then its record revived at p and inserted.  new_cells: the
+  // Moves live vertex v to p (finite, not v's point), keeping its id: v is
+  // removed, then its record revived at p and inserted.  Returns v, or the
+  // vertex already at p (v then stays removed: CGAL's move).  new_cells: the
   // slots of every cell made by either step that is still there (each once).
-  void move(Vertex_id v, const double* p, Tet_id start, std::vector<Tet_id>& new_cells)
+  Vertex_id move(Vertex_id v, const double* p, Tet_id start, std::vector<Tet_id>& new_cells)
   {
     std::vector<Tet_id> made;
     remove(v, start, made);
-    reinsert(v, p, new_cells);
+    const Vertex_id moved = reinsert(v, p, new_cells);
     made.insert(made.end(), new_cells.begin(), new_cells.end());
     std::sort(made.begin(), made.end());
     made.erase(std::unique(made.begin(), made.end()), made.end());
     new_cells.clear();
     for(Tet_id t : made)
       if(t < mesh.number_of_slots() && mesh.is_live(t)) new_cells.push_back(t);
+    return moved;
   }
 
   // Exact validity: combinatorics, orientation and the (perturbed) local
@@ -348,9 +350,10 @@ public:
   bool is_valid(std::string* why = nullptr) const;
 
 private:
-  // The dead record of v back at p (no vertex), inserted with its id.
-  // new_cells: the Delaunay ball in 3D, else every cell made.
-  void reinsert(Vertex_id v, const double* p, std::vector<Tet_id>& new_cells)
+  // The dead record of v back at p, inserted with its id; returns v, or
+  // the vertex at p, v's record dead again.  new_cells: the Delaunay ball in
+  // 3D, else every cell made.
+  Vertex_id reinsert(Vertex_id v, const double* p, std::vector<Tet_id>& new_cells)
   {
     mesh.revive_vertex(v, p);
     extend_bounding_box_with(v);
@@ -361,11 +364,13 @@ private:
       Tet_id hint = mesh.is_live(hint_) ? hint_ : mesh.first_live_tet();
       Vertex_id existing = ghost_vertex;
       const Insertion_result result = kernel.insert(v, hint, existing);
-      CGAL_assertion(result != Insertion_result::duplicate);
-      (void)result;
       hint_ = hint;
       new_cells.assign(scratch.ball.begin(), scratch.ball.end());
       finish_single_insertion(scratch);
+      if(result == Insertion_result::duplicate) {
+        mesh.kill_vertex(v);
+        return existing;
+      }
     } else if(extend_affine_hull(0, -1, simplex) == 3) {
       lower.stop();
       create_initial_tetrahedron(simplex);
@@ -378,11 +383,14 @@ private:
         if(mesh.is_live(t)) new_cells.push_back(t);
     } else {
       const Vertex_id inserted = lower.insert(mesh, v, Lower_dimensional_triangulation::Reference_cell(), nullptr);
-      CGAL_assertion(inserted == v);
-      (void)inserted;
       dimension = lower.delaunay().dimension();
       lower.take_fresh_slots(new_cells);
+      if(inserted != v) {
+        mesh.kill_vertex(v);
+        return inserted;
+      }
     }
+    return v;
   }
   typedef std::chrono::steady_clock Clock;
   static double seconds(Clock::time_point a, Clock::time_point b)
