@@ -502,7 +502,7 @@ private:
     CGAL_assertion(small.dimension == 3 && small.number_of_vertices() == hole.link.size());
     std::vector<Vertex_id> global_of_small(hole.link.size());
     for(std::size_t k = 0; k < hole.link.size(); ++k) global_of_small[small_of_link[k]] = hole.link[k];
-    if(!fill_hole(mesh, hole, small.mesh, global_of_small, new_cells))
+    if(!fill_hole(mesh, hole, small.mesh, small_of_link, global_of_small, new_cells))
       throw std::logic_error("Fast_Delaunay_triangulation_3: a facet of the hole of a removed vertex is not in "
                              "the Delaunay triangulation of its link");
   }
