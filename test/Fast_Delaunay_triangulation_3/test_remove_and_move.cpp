@@ -9,6 +9,7 @@
 #include "triangulation_checks.h"
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/convert_to_cgal.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_data_structure_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
@@ -441,6 +442,11 @@ TEST(Remove, DeadRecordsAfterwards)
   file >> read_by_cgal;
   ASSERT_TRUE(read_by_cgal.is_valid());
   EXPECT_TRUE(finite_cell_keys(read_by_cgal) == finite_cell_keys(t.tr));
+  Cgal_dt converted;
+  CGAL::convert_to_cgal(t.tr, converted);
+  ASSERT_TRUE(converted.is_valid());
+  EXPECT_EQ(converted.number_of_vertices(), t.tr.number_of_vertices());
+  EXPECT_TRUE(finite_cell_keys(converted) == finite_cell_keys(t.tr));
 }
 
 // The partitioned engine inserts after removals (dead records among the ids

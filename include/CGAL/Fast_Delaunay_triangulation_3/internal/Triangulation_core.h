@@ -301,7 +301,6 @@ public:
   {
     CGAL_precondition(v < vertex_slots() && !mesh.is_dead(v));
     new_cells.clear();
-    last_report = Insertion_report();
     if(dimension < 3) {
       lower.remove(mesh, v, new_cells);
       mesh.kill_vertex(v);
