@@ -1495,10 +1495,24 @@ private:
       throw std::invalid_argument("Fast_Delaunay_triangulation_3::remove: a vertex is given twice in the range");
     return vertices;
   }
-  // The start of the removal's star: a cell of v in dimension 3.
+  // The start of the removal's star: a cell of v in dimension 3.  With the
+  // v->cell() cache gone (insert(p) drops it), a walk to v's point finds one,
+  // until the walks since the cache was last built cost about as much as
+  // building it (O(n)): then it is built, so that neither removals between
+  // insertions nor long runs of removals pay O(n) each.
   Tet_id removal_start(Vertex_handle v) const
   {
-    return dimension() == 3 ? incident_cell_of(v.index()).index() : Tet_id(0);
+    if(dimension() < 3) return 0;
+    std::size_t& walks = anchor_->walks_without_incident_cells;
+    if(anchor_->incident_cells.empty() && ++walks <= std::size_t(vertex_count()) / 1024 + 16) {
+      Locate_type lt;
+      int li, lj;
+      const Cell_handle c = locate(v->point(), lt, li, lj);
+      CGAL_assertion(lt == VERTEX && c->vertex(li) == v);
+      return c.index();
+    }
+    walks = 0;
+    return incident_cell_of(v.index()).index();
   }
   void remove_vertex(Vertex_handle v, std::vector<Tet_id>& made)
   {

@@ -49,6 +49,22 @@ struct Tracked
     }
     return v;
   }
+  // A bulk insertion (BRIO order, partitioned with threads), each point's
+  // vertex then found by its point.
+  void insert_range(const std::vector<Point>& points)
+  {
+    tr.insert(points.begin(), points.end());
+    for(const Point& p : points) {
+      Vertex_handle v;
+      ASSERT_TRUE(tr.is_vertex(p, v));
+      vertices.push_back({v, p});
+    }
+  }
+  void remove_at(std::size_t k)
+  {
+    tr.remove(vertices[k].first);
+    forget(k);
+  }
   std::vector<Point> points() const
   {
     std::vector<Point> p;
@@ -87,10 +103,16 @@ private:
   std::map<std::uint32_t, int> expected_info_;
 };
 
-Point random_point(std::mt19937_64& rng, double scale = 1)
+Point random_point(std::mt19937_64& rng)
 {
-  std::uniform_real_distribution<double> u(0, scale);
+  std::uniform_real_distribution<double> u(0, 1);
   return Point(u(rng), u(rng), u(rng));
+}
+std::vector<Point> random_points(int n, std::mt19937_64& rng)
+{
+  std::vector<Point> p;
+  for(int i = 0; i < n; ++i) p.push_back(random_point(rng));
+  return p;
 }
 
 // Random steps on `points`: insert a point of `points`, remove a vertex or
@@ -110,9 +132,7 @@ void random_steps(const std::vector<Point>& points, int steps, std::uint64_t see
     if(kind == 0 || t.vertices.empty()) {
       t.insert(points[rng() % points.size()]);
     } else if(kind == 1) {
-      const std::size_t k = rng() % t.vertices.size();
-      t.tr.remove(t.vertices[k].first);
-      t.forget(k);
+      t.remove_at(rng() % t.vertices.size());
     } else {
       const std::size_t k = rng() % t.vertices.size();
       const Point from = t.vertices[k].second;
@@ -151,8 +171,7 @@ std::vector<Point> grid(int k)
 TEST(Remove, RandomPointsInsertRemoveMove)
 {
   std::mt19937_64 rng(11);
-  std::vector<Point> points;
-  for(int i = 0; i < 150; ++i) points.push_back(random_point(rng));
+  const std::vector<Point> points = random_points(150, rng);
   random_steps(points, 120, 12, false);
 }
 
@@ -163,8 +182,7 @@ TEST(Remove, GridInsertRemoveMove) { random_steps(grid(5), 120, 13, true); }
 TEST(Remove, WithSubDeterminants)
 {
   std::mt19937_64 rng(26);
-  std::vector<Point> points;
-  for(int i = 0; i < 100; ++i) points.push_back(random_point(rng));
+  const std::vector<Point> points = random_points(100, rng);
   random_steps(points, 80, 27, false, true);
   random_steps(grid(4), 60, 28, true, true);
 }
@@ -186,9 +204,7 @@ TEST(Remove, WholeGridDownToEmpty)
   std::mt19937_64 rng(15);
   int dimension_seen[4] = {0, 0, 0, 0};
   while(!t.vertices.empty() && !::testing::Test::HasFatalFailure()) {
-    const std::size_t k = rng() % t.vertices.size();
-    t.tr.remove(t.vertices[k].first);
-    t.forget(k);
+    t.remove_at(rng() % t.vertices.size());
     t.check("after a removal");
     if(t.tr.dimension() >= 0) ++dimension_seen[t.tr.dimension()];
   }
@@ -275,7 +291,7 @@ TEST(Remove, HullVertices)
 {
   Tracked t;
   std::mt19937_64 rng(19);
-  for(int i = 0; i < 200; ++i) t.insert(random_point(rng));
+  for(const Point& p : random_points(200, rng)) t.insert(p);
   t.remember_infos();
   std::vector<Vertex_handle> hull;
   t.tr.adjacent_vertices(t.tr.infinite_vertex(), std::back_inserter(hull));
@@ -299,7 +315,7 @@ TEST(Remove, CellInfosOutsideTheHoleSurvive)
 {
   Tracked t;
   std::mt19937_64 rng(20);
-  for(int i = 0; i < 100; ++i) t.insert(random_point(rng));
+  for(const Point& p : random_points(100, rng)) t.insert(p);
   for(int round = 0; round < 10; ++round) {
     std::map<Cell_key, int> info_of;
     int next = 1;
@@ -310,9 +326,7 @@ TEST(Remove, CellInfosOutsideTheHoleSurvive)
       std::sort(k.begin(), k.end());
       info_of[k] = c->info();
     }
-    const std::size_t victim = rng() % t.vertices.size();
-    t.tr.remove(t.vertices[victim].first);
-    t.forget(victim);
+    t.remove_at(rng() % t.vertices.size());
     std::size_t kept = 0, fresh = 0;
     for(auto c = t.tr.finite_cells_begin(); c != t.tr.finite_cells_end(); ++c) {
       Cell_key k;
@@ -336,7 +350,7 @@ TEST(Remove, RangeReturnsTheCount)
 {
   Tracked t;
   std::mt19937_64 rng(21);
-  for(int i = 0; i < 120; ++i) t.insert(random_point(rng));
+  for(const Point& p : random_points(120, rng)) t.insert(p);
   t.remember_infos();
   std::vector<Vertex_handle> gone;
   for(int k = 0; k < 30; ++k) {
@@ -353,7 +367,7 @@ TEST(Move, OntoAnotherVertex)
 {
   Tracked t;
   std::mt19937_64 rng(22);
-  for(int i = 0; i < 60; ++i) t.insert(random_point(rng));
+  for(const Point& p : random_points(60, rng)) t.insert(p);
   t.remember_infos();
   const Vertex_handle v = t.vertices[3].first, w = t.vertices[7].first;
   EXPECT_EQ(t.tr.move_if_no_collision(v, w->point()), w);
@@ -369,7 +383,7 @@ TEST(Move, MoveIfNoCollisionKeepsTheHandle)
 {
   Tracked t;
   std::mt19937_64 rng(23);
-  for(int i = 0; i < 80; ++i) t.insert(random_point(rng));
+  for(const Point& p : random_points(80, rng)) t.insert(p);
   t.remember_infos();
   for(int s = 0; s < 40 && !::testing::Test::HasFatalFailure(); ++s) {
     const std::size_t k = rng() % t.vertices.size();
@@ -392,7 +406,7 @@ TEST(Remove, BadInputThrowsAndChangesNothing)
 {
   Tracked t;
   std::mt19937_64 rng(24);
-  for(int i = 0; i < 30; ++i) t.insert(random_point(rng));
+  for(const Point& p : random_points(30, rng)) t.insert(p);
   t.remember_infos();
   Fast_dt other;
   const Vertex_handle foreign = other.insert(Point(0, 0, 0));
@@ -418,20 +432,10 @@ TEST(Remove, DeadRecordsAfterwards)
 {
   Tracked t;
   std::mt19937_64 rng(25);
-  for(int i = 0; i < 50; ++i) t.insert(random_point(rng));
-  for(int k = 0; k < 10; ++k) {
-    t.tr.remove(t.vertices.front().first);
-    t.forget(0);
-  }
+  for(const Point& p : random_points(50, rng)) t.insert(p);
+  for(int k = 0; k < 10; ++k) t.remove_at(0);
   t.remember_infos();
-  std::vector<Point> more;
-  for(int i = 0; i < 40; ++i) more.push_back(random_point(rng));
-  t.tr.insert(more.begin(), more.end());
-  for(const Point& p : more) {
-    Vertex_handle v;
-    ASSERT_TRUE(t.tr.is_vertex(p, v));
-    t.vertices.push_back({v, p});
-  }
+  t.insert_range(random_points(40, rng));
   t.check("bulk insertion after removals");
   const Fast_dt copy(t.tr);
   EXPECT_TRUE(copy == t.tr);
@@ -456,27 +460,9 @@ TEST(Remove, ParallelInsertionAfterRemovals)
   Tracked t;
   t.tr.set_number_of_threads(2);
   std::mt19937_64 rng(29);
-  std::vector<Point> first;
-  for(int i = 0; i < 3000; ++i) first.push_back(random_point(rng));
-  t.tr.insert(first.begin(), first.end());
-  for(const Point& p : first) {
-    Vertex_handle v;
-    ASSERT_TRUE(t.tr.is_vertex(p, v));
-    t.vertices.push_back({v, p});
-  }
-  for(int k = 0; k < 300; ++k) {
-    const std::size_t victim = rng() % t.vertices.size();
-    t.tr.remove(t.vertices[victim].first);
-    t.forget(victim);
-  }
-  std::vector<Point> more;
-  for(int i = 0; i < 3000; ++i) more.push_back(random_point(rng));
-  t.tr.insert(more.begin(), more.end());
-  for(const Point& p : more) {
-    Vertex_handle v;
-    ASSERT_TRUE(t.tr.is_vertex(p, v));
-    t.vertices.push_back({v, p});
-  }
+  t.insert_range(random_points(3000, rng));
+  for(int k = 0; k < 300; ++k) t.remove_at(rng() % t.vertices.size());
+  t.insert_range(random_points(3000, rng));
   t.remember_infos();
   t.check("parallel insertion after removals");
 }

@@ -68,6 +68,7 @@ public:
   Geom_traits traits;
   Triangulation_core core;
   mutable std::vector<Tet_id> incident_cells; // lazily built v->cell() cache (dimension 3)
+  mutable std::size_t walks_without_incident_cells = 0; // removals that located their vertex instead
   Vertex_infos<Vertex_info> vertex_infos;
   Cell_infos<Cell_info> cell_infos;
   User_vertices<typename Tr::User_vertex_record> user_vertices;
