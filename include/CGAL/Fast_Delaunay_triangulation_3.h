@@ -615,6 +615,13 @@ public:
     std::vector<Tet_id> made;
     remove_vertex(v, made);
   }
+  // CGAL's concurrency-safe spelling: nothing is locked, the zone is always granted.
+  bool remove(Vertex_handle v, bool* could_lock_zone)
+  {
+    if(could_lock_zone) *could_lock_zone = true;
+    remove(v);
+    return true;
+  }
   // CGAL's remove_and_give_new_cells: the cells that fill the hole.
   template <class OutputItCells>
   void remove_and_give_new_cells(Vertex_handle v, OutputItCells fit)

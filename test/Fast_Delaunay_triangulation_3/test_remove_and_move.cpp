@@ -357,8 +357,13 @@ TEST(Remove, RangeReturnsTheCount)
     gone.push_back(t.vertices.back().first);
     t.vertices.pop_back();
   }
+  bool could_lock_zone = false;
+  EXPECT_TRUE(t.tr.remove(gone.back(), &could_lock_zone));
+  EXPECT_TRUE(could_lock_zone);
+  gone.pop_back();
+  t.vertices.push_back({t.tr.insert(Point(0.5, 0.5, 0.5)), Point(0.5, 0.5, 0.5)});
   EXPECT_EQ(t.tr.remove(gone.begin(), gone.begin() + 15), 15u);
-  EXPECT_EQ(t.tr.remove_cluster(gone.begin() + 15, gone.end()), 15u);
+  EXPECT_EQ(t.tr.remove_cluster(gone.begin() + 15, gone.end()), 14u);
   t.check("after the ranges");
   for(Vertex_handle v : gone) EXPECT_FALSE(t.tr.is_vertex(v));
 }
