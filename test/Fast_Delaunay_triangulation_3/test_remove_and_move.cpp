@@ -32,22 +32,30 @@ typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds> Fast_dt;
 typedef Fast_dt::Vertex_handle Vertex_handle;
 
 // The triangulation under test and what it must hold: each live handle with
-// its point and info.
+// its point and the info given to it when it was inserted.
 struct Tracked
 {
+  struct Entry
+  {
+    Vertex_handle first;
+    Point second;
+    int info;
+  };
   Fast_dt tr;
-  std::vector<std::pair<Vertex_handle, Point>> vertices;
+  std::vector<Entry> vertices;
   int next_info = 1;
 
   Vertex_handle insert(const Point& p)
   {
     const std::size_t before = tr.number_of_vertices();
     const Vertex_handle v = tr.insert(p);
-    if(tr.number_of_vertices() != before) {
-      v->info() = next_info++;
-      vertices.push_back({v, p});
-    }
+    if(tr.number_of_vertices() != before) add(v, p);
     return v;
+  }
+  void add(Vertex_handle v, const Point& p)
+  {
+    v->info() = next_info;
+    vertices.push_back({v, p, next_info++});
   }
   // A bulk insertion (BRIO order, partitioned with threads), each point's
   // vertex then found by its point.
@@ -57,7 +65,7 @@ struct Tracked
     for(const Point& p : points) {
       Vertex_handle v;
       ASSERT_TRUE(tr.is_vertex(p, v));
-      vertices.push_back({v, p});
+      add(v, p);
     }
   }
   void remove_at(std::size_t k)
@@ -70,12 +78,6 @@ struct Tracked
     std::vector<Point> p;
     for(const auto& e : vertices) p.push_back(e.second);
     return p;
-  }
-  int info_of(std::size_t k) const { return expected_info_.at(vertices[k].first.index()); }
-  void remember_infos()
-  {
-    expected_info_.clear();
-    for(const auto& e : vertices) expected_info_[e.first.index()] = e.first->info();
   }
   void forget(std::size_t k) { vertices.erase(vertices.begin() + static_cast<std::ptrdiff_t>(k)); }
 
@@ -90,17 +92,13 @@ struct Tracked
     for(const auto& e : vertices) {
       ASSERT_TRUE(tr.is_vertex(e.first));
       EXPECT_EQ(e.first->point(), e.second);
-      const auto found = expected_info_.find(e.first.index());
-      if(found != expected_info_.end()) EXPECT_EQ(e.first->info(), found->second);
+      EXPECT_EQ(e.first->info(), e.info);
     }
     std::size_t iterated = 0;
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) ++iterated;
     EXPECT_EQ(iterated, vertices.size());
     EXPECT_EQ(std::size_t(std::distance(tr.all_vertices_begin(), tr.all_vertices_end())), vertices.size() + 1);
   }
-
-private:
-  std::map<std::uint32_t, int> expected_info_;
 };
 
 Point random_point(std::mt19937_64& rng)
@@ -124,7 +122,6 @@ void random_steps(const std::vector<Point>& points, int steps, std::uint64_t see
   Tracked t;
   t.tr.set_sub_determinants(sub_determinants);
   for(const Point& p : points) t.insert(p);
-  t.remember_infos();
   t.check("initial");
   std::mt19937_64 rng(seed);
   for(int s = 0; s < steps && !::testing::Test::HasFatalFailure(); ++s) {
@@ -152,8 +149,7 @@ void random_steps(const std::vector<Point>& points, int steps, std::uint64_t see
         t.vertices[k].second = to;
       }
     }
-    t.remember_infos();
-    t.check(("step " + std::to_string(s)).c_str());
+      t.check(("step " + std::to_string(s)).c_str());
   }
 }
 
@@ -200,7 +196,6 @@ TEST(Remove, WholeGridDownToEmpty)
 {
   Tracked t;
   for(const Point& p : grid(4)) t.insert(p);
-  t.remember_infos();
   std::mt19937_64 rng(15);
   int dimension_seen[4] = {0, 0, 0, 0};
   while(!t.vertices.empty() && !::testing::Test::HasFatalFailure()) {
@@ -222,7 +217,6 @@ TEST(Remove, DimensionDropAndLift)
   for(const Point& p : {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0), Point(0.5, 0.5, 0)})
     t.insert(p);
   const Vertex_handle apex = t.insert(Point(0.5, 0.5, 1));
-  t.remember_infos();
   t.check("pyramid");
   ASSERT_EQ(t.tr.dimension(), 3);
   t.tr.remove(apex);
@@ -247,7 +241,6 @@ TEST(Remove, FlatLinkOnTheHull)
   Tracked t;
   for(const Point& p : grid(2)) t.insert(p);
   const Vertex_handle apex = t.insert(Point(0.4, 0.45, 3));
-  t.remember_infos();
   t.check("pyramid on a cube");
   t.tr.remove(apex);
   t.forget(t.vertices.size() - 1);
@@ -267,8 +260,7 @@ TEST(Remove, ApexesOverAGridFace)
     Tracked t;
     for(const Point& p : grid(3)) t.insert(p);
     const Vertex_handle v = t.insert(apex);
-    t.remember_infos();
-    t.tr.remove(v);
+      t.tr.remove(v);
     t.forget(t.vertices.size() - 1);
     t.check("apex removed");
     if(::testing::Test::HasFatalFailure()) return;
@@ -292,7 +284,6 @@ TEST(Remove, HullVertices)
   Tracked t;
   std::mt19937_64 rng(19);
   for(const Point& p : random_points(200, rng)) t.insert(p);
-  t.remember_infos();
   std::vector<Vertex_handle> hull;
   t.tr.adjacent_vertices(t.tr.infinite_vertex(), std::back_inserter(hull));
   ASSERT_GT(hull.size(), 10u);
@@ -351,7 +342,6 @@ TEST(Remove, RangeReturnsTheCount)
   Tracked t;
   std::mt19937_64 rng(21);
   for(const Point& p : random_points(120, rng)) t.insert(p);
-  t.remember_infos();
   std::vector<Vertex_handle> gone;
   for(int k = 0; k < 30; ++k) {
     gone.push_back(t.vertices.back().first);
@@ -361,7 +351,7 @@ TEST(Remove, RangeReturnsTheCount)
   EXPECT_TRUE(t.tr.remove(gone.back(), &could_lock_zone));
   EXPECT_TRUE(could_lock_zone);
   gone.pop_back();
-  t.vertices.push_back({t.tr.insert(Point(0.5, 0.5, 0.5)), Point(0.5, 0.5, 0.5)});
+  t.insert(Point(0.5, 0.5, 0.5));
   EXPECT_EQ(t.tr.remove(gone.begin(), gone.begin() + 15), 15u);
   EXPECT_EQ(t.tr.remove_cluster(gone.begin() + 15, gone.end()), 14u);
   t.check("after the ranges");
@@ -373,7 +363,6 @@ TEST(Move, OntoAnotherVertex)
   Tracked t;
   std::mt19937_64 rng(22);
   for(const Point& p : random_points(60, rng)) t.insert(p);
-  t.remember_infos();
   const Vertex_handle v = t.vertices[3].first, w = t.vertices[7].first;
   EXPECT_EQ(t.tr.move_if_no_collision(v, w->point()), w);
   t.check("move_if_no_collision onto a vertex changes nothing");
@@ -389,7 +378,6 @@ TEST(Move, MoveIfNoCollisionKeepsTheHandle)
   Tracked t;
   std::mt19937_64 rng(23);
   for(const Point& p : random_points(80, rng)) t.insert(p);
-  t.remember_infos();
   for(int s = 0; s < 40 && !::testing::Test::HasFatalFailure(); ++s) {
     const std::size_t k = rng() % t.vertices.size();
     const Point to = s % 2 ? random_point(rng) : Point(t.vertices[k].second.x() + 1e-3, t.vertices[k].second.y(),
@@ -412,7 +400,6 @@ TEST(Remove, BadInputThrowsAndChangesNothing)
   Tracked t;
   std::mt19937_64 rng(24);
   for(const Point& p : random_points(30, rng)) t.insert(p);
-  t.remember_infos();
   Fast_dt other;
   const Vertex_handle foreign = other.insert(Point(0, 0, 0));
   EXPECT_THROW(t.tr.remove(t.tr.infinite_vertex()), std::invalid_argument);
@@ -439,7 +426,6 @@ TEST(Remove, DeadRecordsAfterwards)
   std::mt19937_64 rng(25);
   for(const Point& p : random_points(50, rng)) t.insert(p);
   for(int k = 0; k < 10; ++k) t.remove_at(0);
-  t.remember_infos();
   t.insert_range(random_points(40, rng));
   t.check("bulk insertion after removals");
   const Fast_dt copy(t.tr);
@@ -468,6 +454,5 @@ TEST(Remove, ParallelInsertionAfterRemovals)
   t.insert_range(random_points(3000, rng));
   for(int k = 0; k < 300; ++k) t.remove_at(rng() % t.vertices.size());
   t.insert_range(random_points(3000, rng));
-  t.remember_infos();
   t.check("parallel insertion after removals");
 }
