@@ -7,6 +7,10 @@
 // them, equally for every engine, and each table states that baseline. Engines are interleaved round by round
 // (round r: fast, cgal, cgal-par, ...) so that a drift of the machine hits them alike; the table shows medians.
 //
+// Rows fast-remove / cgal-remove and fast-move / cgal-move (not run by default) time the removal of 10% of the
+// vertices one by one, and the move of 10% by a small random displacement, after an untimed insertion of all points;
+// each is compared with its CGAL counterpart.
+//
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all] [--engines fast,cgal,cgal-par,fast-par]
 //                           [--rounds 3] [--threads 2[,1...]] [--phases] [--verbose] [--csv]
 
@@ -41,6 +45,9 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <map>
+#include <random>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -149,6 +156,65 @@ Engine_result run_cgal(const Points& points, int /*threads*/)
   return insert_and_count(triangulation, points);
 }
 
+// Every tenth input point: the vertices that the removal and move rows change, in input order (random in space),
+// the same points in the same order for both triangulations; a point given twice counts once.  Not timed.
+template <class Triangulation>
+std::vector<typename Triangulation::Vertex_handle> every_tenth_vertex(const Triangulation& triangulation,
+                                                                      const Points& points)
+{
+  std::vector<typename Triangulation::Vertex_handle> vertices;
+  std::set<Point> seen;
+  for(std::size_t i = 0; i < points.size(); i += 10) {
+    typename Triangulation::Vertex_handle v;
+    if(seen.insert(points[i]).second && triangulation.is_vertex(points[i], v)) vertices.push_back(v);
+  }
+  return vertices;
+}
+
+// Times the removal of every tenth vertex, one by one.
+template <class Triangulation>
+Engine_result remove_tenth(const Points& points)
+{
+  Triangulation triangulation(points.begin(), points.end());
+  const auto vertices = every_tenth_vertex(triangulation, points);
+  Engine_result result;
+  const Clock::time_point start = Clock::now();
+  for(const auto& v : vertices) triangulation.remove(v);
+  result.seconds = seconds_since(start);
+  result.finite_cells = triangulation.number_of_finite_cells();
+  return result;
+}
+
+// Times the move of every tenth vertex by a random displacement of at most a tenth of the mean spacing per axis
+// (from the bounding box and the number of points).
+template <class Triangulation>
+Engine_result move_tenth(const Points& points)
+{
+  Triangulation triangulation(points.begin(), points.end());
+  const auto vertices = every_tenth_vertex(triangulation, points);
+  const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
+  const double spacing = std::cbrt((box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) * (box.zmax() - box.zmin()) /
+                                   static_cast<double>(std::max<std::size_t>(points.size(), 1)));
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> d(-0.1 * spacing, 0.1 * spacing);
+  std::vector<Point> targets;
+  for(const auto& v : vertices) {
+    const Point p = v->point();
+    targets.emplace_back(p.x() + d(rng), p.y() + d(rng), p.z() + d(rng));
+  }
+  Engine_result result;
+  const Clock::time_point start = Clock::now();
+  for(std::size_t k = 0; k < vertices.size(); ++k) triangulation.move(vertices[k], targets[k]);
+  result.seconds = seconds_since(start);
+  result.finite_cells = triangulation.number_of_finite_cells();
+  return result;
+}
+
+Engine_result run_fast_remove(const Points& points, int /*threads*/) { return remove_tenth<Fast_dt>(points); }
+Engine_result run_cgal_remove(const Points& points, int /*threads*/) { return remove_tenth<Cgal_dt>(points); }
+Engine_result run_fast_move(const Points& points, int /*threads*/) { return move_tenth<Fast_dt>(points); }
+Engine_result run_cgal_move(const Points& points, int /*threads*/) { return move_tenth<Cgal_dt>(points); }
+
 #ifdef CGAL_LINKED_WITH_TBB
 typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<Kernel>,
                                              CGAL::Delaunay_triangulation_cell_base_3<Kernel>, CGAL::Parallel_tag>
@@ -208,6 +274,8 @@ struct Engine
   bool parallel;   // runs once per --threads value; a sequential engine runs once, on 1 thread
   bool by_default; // runs when --engines is not given
   Engine_result (*run)(const Points& points, int threads);
+  // The row this one's speed-up and cell count are compared with.
+  const char* reference = "cgal";
 };
 
 // The engines, in the order of the table; a new engine is one more row and one run function.
@@ -221,11 +289,14 @@ const std::vector<Engine>& engine_table()
       {"cgal-par", true, true, run_cgal_parallel},
       {"fast-par", true, true, run_fast_parallel},
 #endif
+      {"fast-remove", false, false, run_fast_remove, "cgal-remove"},
+      {"cgal-remove", false, false, run_cgal_remove, "cgal-remove"},
+      {"fast-move", false, false, run_fast_move, "cgal-move"},
+      {"cgal-move", false, false, run_cgal_move, "cgal-move"},
   };
   return engines;
 }
 
-const char* const reference_engine = "cgal";
 
 // ------------------------------------------------------------------------------------------------ child processes
 
@@ -504,10 +575,11 @@ void print_machine(const Options& options)
   std::printf(", assertions ON (not a Release build: times are not representative)\n");
 #endif
   std::printf("%smethod:  every engine run is its own forked process; seconds = insertion into an empty\n"
-              "%s         triangulation, median over the rounds, engines interleaved in each; fast = ours, 1 thread;\n"
+              "%s         triangulation (-remove, -move rows: removing / moving 10%% of the vertices one by one after\n"
+              "%s         an untimed insertion), median over the rounds, engines interleaved in each; fast = ours, 1 thread;\n"
               "%s         peak MiB = the child's max RSS, which includes the input points (generated once in the\n"
               "%s         parent before forking, %zu bytes each) and the baseline process, alike for every engine\n",
-              c, c, c, c, sizeof(Point));
+              c, c, c, c, c, sizeof(Point));
 }
 
 // ------------------------------------------------------------------------------------------------ measuring
@@ -630,17 +702,18 @@ std::string with_commas(std::uint64_t value)
 
 double mib(long kib) { return static_cast<double>(kib) / 1024.0; }
 
-const Row* reference_row(const Measurement& m)
+const Row* reference_row(const Measurement& m, const Row& of)
 {
   for(const Row& row : m.rows)
-    if(row.label == reference_engine && !row.seconds.empty()) return &row;
+    if(row.label == of.engine->reference && !row.seconds.empty()) return &row;
   return nullptr;
 }
 
-// Speed-up of a row over CGAL's sequential triangulation, or 0 when CGAL did not run.
+// Speed-up of a row over CGAL's sequential triangulation doing the same (insertion, removal or move), or 0 when
+// CGAL did not run.
 double speedup(const Measurement& m, const Row& row)
 {
-  const Row* reference = reference_row(m);
+  const Row* reference = reference_row(m, row);
   if(!reference || row.seconds.empty()) return 0;
   return median(reference->seconds) / median(row.seconds);
 }
@@ -717,18 +790,20 @@ void print_attempts(const Row& row)
   std::printf("\n");
 }
 
-// Warnings about cell counts: every engine must find CGAL's finite cells (the first engine's when CGAL did not
-// run), in every round.
+// Warnings about cell counts: every engine must find the finite cells of its CGAL counterpart (of the first engine
+// doing the same when CGAL did not run), in every round.
 std::vector<std::string> cell_count_warnings(const Measurement& m)
 {
   std::vector<std::string> warnings;
-  const Row* reference = reference_row(m);
+  std::map<std::string, const Row*> first_of; // by reference name
   for(const Row& row : m.rows) {
     if(!row.error.empty())
       warnings.push_back(row.label + " failed: " + row.error);
     if(row.cells_vary)
       warnings.push_back(row.label + " found different numbers of finite cells in different rounds");
-    if(!reference && !row.seconds.empty()) reference = &row;
+    const Row* reference = reference_row(m, row);
+    if(!reference && !row.seconds.empty() && !first_of.count(row.engine->reference)) first_of[row.engine->reference] = &row;
+    if(!reference && first_of.count(row.engine->reference)) reference = first_of[row.engine->reference];
     if(reference && !row.seconds.empty() && row.finite_cells != reference->finite_cells)
       warnings.push_back(row.label + " has " + with_commas(row.finite_cells) + " finite cells, " + reference->label +
                          " has " + with_commas(reference->finite_cells));

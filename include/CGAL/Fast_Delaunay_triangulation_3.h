@@ -47,6 +47,7 @@
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -190,9 +191,9 @@ private:
       return a.core.mesh.is_live(id) && !a.core.mesh.is_ghost(id);
     }
   };
-  struct Accept_any_vertex
+  struct Accept_live_vertex
   {
-    bool operator()(const Anchor&, Vertex_id) const { return true; }
+    bool operator()(const Anchor& a, Vertex_id id) const { return !a.core.mesh.is_dead(id); }
   };
 
 public:
@@ -201,10 +202,11 @@ public:
   typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell_handle, Tet_id, Accept_finite_cell>
       Finite_cells_iterator;
   typedef All_cells_iterator Cell_iterator;
-  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Vertex_handle, Vertex_id, Accept_any_vertex>
+  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Vertex_handle, Vertex_id, Accept_live_vertex>
       Finite_vertices_iterator;
 
-  // All vertices: the infinite vertex first, then the finite ones (CGAL's order).
+  // All vertices: the infinite vertex first, then the finite ones (CGAL's
+  // order), skipping the records of removed vertices.
   class All_vertices_iterator
   {
   public:
@@ -216,13 +218,13 @@ public:
 
     All_vertices_iterator() = default;
     All_vertices_iterator(const Anchor* tr, std::size_t position)
-        : position_(position), handle_(tr, id_at(position)) {}
+        : position_(skip_dead(tr, position)), handle_(tr, id_at(position_)) {}
     reference operator*() const { return *handle_; }
     pointer operator->() const { return handle_.operator->(); }
     operator Vertex_handle() const { return handle_; }
     All_vertices_iterator& operator++()
     {
-      ++position_;
+      position_ = skip_dead(handle_.owner(), position_ + 1);
       handle_ = Vertex_handle(handle_.owner(), id_at(position_));
       return *this;
     }
@@ -239,6 +241,13 @@ public:
     friend bool operator!=(const All_vertices_iterator& a, const All_vertices_iterator& b) { return a.position_ != b.position_; }
 
   private:
+    static std::size_t skip_dead(const Anchor* tr, std::size_t position)
+    {
+      const auto& m = tr->core.mesh;
+      while(position > 0 && position <= m.vertices.size() && m.is_dead(static_cast<Vertex_id>(position - 1)))
+        ++position;
+      return position;
+    }
     static Vertex_id id_at(std::size_t position)
     {
       return position == 0 ? Fast_Delaunay_triangulation_3_internal::ghost_vertex
@@ -662,6 +671,84 @@ public:
     return Vertex_handle(anchor_.get(), v);
   }
 
+  // ---------------------------------------------------------------- removal and moves
+  // CGAL's remove(v): the cells of v go, the hole is re-triangulated by the
+  // Delaunay triangulation of the remaining points (the same as CGAL's:
+  // unique under its perturbation).  Handles of the other vertices and of
+  // the cells outside the hole stay valid, with their infos; the new cells
+  // have Info().  The removed vertex's id is not given again.  Below
+  // dimension 3, and when the remaining points stop spanning 3D, CGAL's
+  // triangulation beside the arrays removes it.  The infinite vertex, a
+  // removed vertex or a handle of another triangulation throw
+  // std::invalid_argument, and nothing changes.
+  void remove(Vertex_handle v)
+  {
+    std::vector<Tet_id> made;
+    remove_vertex(v, made);
+  }
+  // CGAL's concurrency-safe spelling: nothing is locked, the zone is always granted.
+  bool remove(Vertex_handle v, bool* could_lock_zone)
+  {
+    if(could_lock_zone) *could_lock_zone = true;
+    remove(v);
+    return true;
+  }
+  // CGAL's remove_and_give_new_cells: the cells that fill the hole.
+  template <class OutputItCells>
+  void remove_and_give_new_cells(Vertex_handle v, OutputItCells fit)
+  {
+    std::vector<Tet_id> made;
+    remove_vertex(v, made);
+    for(Tet_id t : made) *fit++ = Cell_handle(anchor_.get(), t);
+  }
+  // Removes the vertices of [first, last), one by one (CGAL's parallel
+  // removal with a Parallel_tag data structure is not done here); returns
+  // how many went.  All handles are checked first: a bad one, or one given
+  // twice (CGAL's precondition), throws std::invalid_argument before
+  // anything changes.
+  template <class InputIterator>
+  size_type remove(InputIterator first, InputIterator last)
+  {
+    const std::vector<Vertex_handle> vertices = checked_vertices_to_remove(first, last);
+    const size_type before = number_of_vertices();
+    for(Vertex_handle v : vertices) remove(v);
+    return before - number_of_vertices();
+  }
+  // CGAL's remove_cluster: the same result as remove(first, last) (CGAL
+  // re-triangulates the union of the stars at once; here the vertices go one
+  // by one, which gives the same unique triangulation).
+  template <class InputIterator>
+  size_type remove_cluster(InputIterator first, InputIterator last)
+  {
+    return remove(first, last);
+  }
+
+  // CGAL's move_if_no_collision: if p is another vertex, that vertex is
+  // returned and nothing changes; otherwise v moves to p and is returned,
+  // its handle and info kept (its cells are new).  A moved vertex is removed
+  // and inserted again under the same id; no shortcut for small moves.  A
+  // NaN or infinite coordinate throws std::invalid_argument, nothing changed.
+  Vertex_handle move_if_no_collision(Vertex_handle v, const Point& p)
+  {
+    std::vector<Tet_id> made;
+    return move_vertex(v, p, false, made);
+  }
+  template <class OutputItCells>
+  Vertex_handle move_if_no_collision_and_give_new_cells(Vertex_handle v, const Point& p, OutputItCells fit)
+  {
+    std::vector<Tet_id> made;
+    const Vertex_handle w = move_vertex(v, p, false, made);
+    if(w == v) for(Tet_id t : made) *fit++ = Cell_handle(anchor_.get(), t);
+    return w;
+  }
+  // CGAL's move: as move_if_no_collision, except that if p is another
+  // vertex w, v is removed and w returned.
+  Vertex_handle move(Vertex_handle v, const Point& p)
+  {
+    std::vector<Tet_id> made;
+    return move_vertex(v, p, true, made);
+  }
+
   // ---------------------------------------------------------------- conflict zone (dimensions 3 and 2)
   // CGAL's find_conflicts: c must be in conflict with p (e.g. the cell of
   // locate(p) when p is no vertex).  Writes the boundary facets (c', i) with
@@ -1022,7 +1109,8 @@ public:
   }
   bool is_vertex(Vertex_handle v) const
   {
-    return v.owner() == anchor_.get() && (is_infinite(v) || v.index() < number_of_vertices());
+    return v.owner() == anchor_.get() &&
+           (is_infinite(v) || (v.index() < vertex_count() && !anchor_->core.mesh.is_dead(v.index())));
   }
   bool is_cell(Cell_handle c) const
   {
@@ -1335,7 +1423,7 @@ public:
 
   All_vertices_iterator all_vertices_begin() const { return All_vertices_iterator(anchor_.get(), 0); }
   // The infinite vertex exists even in the empty triangulation, as in CGAL.
-  All_vertices_iterator all_vertices_end() const { return All_vertices_iterator(anchor_.get(), number_of_vertices() + 1); }
+  All_vertices_iterator all_vertices_end() const { return All_vertices_iterator(anchor_.get(), std::size_t(vertex_count()) + 1); }
   All_vertices_iterator vertices_begin() const { return all_vertices_begin(); }
   All_vertices_iterator vertices_end() const { return all_vertices_end(); }
   Finite_vertices_iterator finite_vertices_begin() const
@@ -1425,7 +1513,8 @@ public:
     // dimension 3); building it costs O(n log n), once per write.
     std::vector<Point> points;
     points.reserve(number_of_vertices());
-    for(Vertex_id v = 0; v < vertex_count(); ++v) points.push_back(point_of(v));
+    for(Vertex_id v = 0; v < vertex_count(); ++v)
+      if(!anchor_->core.mesh.is_dead(v)) points.push_back(point_of(v));
     os << Delaunay_triangulation_3<Gt>(points.begin(), points.end());
     os.flush();
   }
@@ -1481,6 +1570,78 @@ private:
 #endif
   }
 
+  void check_removable(Vertex_handle v, const char* what) const
+  {
+    if(v == Vertex_handle() || v.owner() != anchor_.get() || is_infinite(v) || !is_vertex(v)) {
+      std::ostringstream message;
+      message << "Fast_Delaunay_triangulation_3::" << what << ": "
+              << (v == Vertex_handle() ? "null vertex handle"
+                  : v.owner() != anchor_.get() ? "a vertex of another triangulation"
+                  : is_infinite(v) ? "the infinite vertex" : "a vertex already removed");
+      throw std::invalid_argument(message.str());
+    }
+  }
+  template <class InputIterator>
+  std::vector<Vertex_handle> checked_vertices_to_remove(InputIterator first, InputIterator last) const
+  {
+    std::vector<Vertex_handle> vertices;
+    std::vector<Vertex_id> ids;
+    for(; first != last; ++first) {
+      const Vertex_handle v = *first;
+      check_removable(v, "remove");
+      vertices.push_back(v);
+      ids.push_back(v.index());
+    }
+    std::sort(ids.begin(), ids.end());
+    if(std::adjacent_find(ids.begin(), ids.end()) != ids.end())
+      throw std::invalid_argument("Fast_Delaunay_triangulation_3::remove: a vertex is given twice in the range");
+    return vertices;
+  }
+  // The start of the removal's star: a cell of v in dimension 3.  With the
+  // v->cell() cache gone (insert(p) drops it), a walk to v's point finds one,
+  // until the walks since the cache was last built cost about as much as
+  // building it (O(n)): then it is built, so that neither removals between
+  // insertions nor long runs of removals pay O(n) each.
+  Tet_id removal_start(Vertex_handle v) const
+  {
+    if(dimension() < 3) return 0;
+    std::size_t& walks = anchor_->walks_without_incident_cells;
+    if(anchor_->incident_cells.empty() && ++walks <= std::size_t(vertex_count()) / 1024 + 16) {
+      Locate_type lt;
+      int li, lj;
+      const Cell_handle c = locate(v->point(), lt, li, lj);
+      CGAL_assertion(lt == VERTEX && c->vertex(li) == v);
+      return c.index();
+    }
+    walks = 0;
+    return incident_cell_of(v.index()).index();
+  }
+  void remove_vertex(Vertex_handle v, std::vector<Tet_id>& made)
+  {
+    check_removable(v, "remove");
+    anchor_->core.remove(v.index(), removal_start(v), made);
+    anchor_->cells_made(made);
+  }
+  Vertex_handle move_vertex(Vertex_handle v, const Point& p, bool remove_on_collision, std::vector<Tet_id>& made)
+  {
+    check_removable(v, remove_on_collision ? "move" : "move_if_no_collision");
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    if(v->point() == p) return v;
+    if(!remove_on_collision) {
+      // As CGAL, p is located from v's cell: moves are mostly short.
+      Locate_type lt;
+      int li, lj;
+      const Cell_handle c = number_of_vertices() > 1 ? locate(p, lt, li, lj, v) : Cell_handle();
+      if(c != Cell_handle() && lt == VERTEX) return c->vertex(li);
+    }
+    // move(): a point already there is found by the insertion, after v's
+    // removal, which is then all that happens (one walk fewer).
+    const Vertex_id moved = anchor_->core.move(v.index(), xyz, removal_start(v), made);
+    anchor_->cells_made(made);
+    return Vertex_handle(anchor_.get(), moved);
+  }
+
   // Dimension 3: the kernel's insertion from `start`; below, CGAL's from
   // the same start (`ball`: the cells of the vertex, in CGAL's order).
   Vertex_handle insert_from(const Point& p, Cell_handle start, std::vector<Tet_id>& ball)
@@ -1501,7 +1662,7 @@ private:
   {
     vertices_added();
     if(anchor_->incident_cells.empty()) return;
-    anchor_->incident_cells.resize(number_of_vertices());
+    anchor_->incident_cells.resize(vertex_count());
     for(Tet_id t : ball)
       for(int i = 0; i < 4; ++i) {
         const Vertex_id w = anchor_->core.mesh.vertex(t, i);
@@ -1718,7 +1879,8 @@ private:
   }
 
   std::size_t cell_slots() const { return dimension() < 3 ? 0 : anchor_->core.mesh.number_of_slots(); }
-  Vertex_id vertex_count() const { return static_cast<Vertex_id>(number_of_vertices()); }
+  // Vertex ids are below it; removed vertices keep their (dead) records.
+  Vertex_id vertex_count() const { return static_cast<Vertex_id>(anchor_->core.vertex_slots()); }
 
   template <class InputIterator>
   static void append_coordinates(InputIterator first, InputIterator last, std::vector<double>& xyz,

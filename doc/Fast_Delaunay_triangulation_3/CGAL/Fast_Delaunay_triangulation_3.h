@@ -60,7 +60,10 @@ partitions space instead). Default: `Default`.
   triangulation's, and the setters (`set_point()`, `set_cell()`,
   `set_vertex()`, `set_neighbor()`, ...) are deleted. A cell's base is reset
   when an insertion replaces the cell, as CGAL's cells are new.
-- Vertices cannot be removed or moved: there is no `remove()` or `move()`.
+- `remove(first, last)` and `remove_cluster()` remove the vertices one by
+  one, also with a `Parallel_tag` data structure; `move()` and
+  `move_if_no_collision()` always remove and re-insert the vertex (keeping
+  its handle and info). The triangulations are CGAL's.
 - `Simplex` (CGAL's `Triangulation_simplex_3`) is provided; its order sorts
   by dimension then by handles (CGAL's by addresses) and `operator<<` prints
   vertex indices. The segment traverser is provided for two points
@@ -515,6 +518,49 @@ the affine hull of the vertices (CGAL's preconditions) or has a NaN or
 infinite coordinate.
 */
 Vertex_handle insert_outside_affine_hull(const Point& p);
+
+/// @}
+
+/// \name Removal and Moves
+/// See Section \ref Fast_Delaunay_triangulation_3Removal of the manual.
+/// @{
+
+/*!
+Removes `v`. The triangulation becomes CGAL's of the remaining points;
+handles of the other vertices, and of the cells that did not have `v`, stay
+valid with their infos. The dimension may decrease. Throws
+`std::invalid_argument`, without change, if `v` is the infinite vertex, a
+removed vertex or a vertex of another triangulation.
+*/
+void remove(Vertex_handle v);
+
+/*!
+Removes the vertices of `[first, last)`, one after the other, and returns
+how many were removed. All handles are checked first (as `remove(v)`, and
+none may appear twice): on a bad one nothing changes.
+*/
+template <class InputIterator>
+size_type remove(InputIterator first, InputIterator last);
+
+/*!
+Same as `remove(first, last)`.
+*/
+template <class InputIterator>
+size_type remove_cluster(InputIterator first, InputIterator last);
+
+/*!
+If `p` is the point of another vertex `w`, returns `w` and changes nothing.
+Otherwise moves `v` to `p` and returns `v`, whose handle and info stay. Throws
+`std::invalid_argument` for a NaN or infinite coordinate, or a bad `v`,
+without change.
+*/
+Vertex_handle move_if_no_collision(Vertex_handle v, const Point& p);
+
+/*!
+Same as `move_if_no_collision()`, except that if `p` is the point of another
+vertex `w`, `v` is removed and `w` returned.
+*/
+Vertex_handle move(Vertex_handle v, const Point& p);
 
 /// @}
 

@@ -60,6 +60,7 @@ Cell_map<Target> copy_cells(const Source& source, Target& target)
 
   std::vector<Target_vertex> vertex_of(mesh.vertices.size());
   for(std::size_t v = 0; v < vertex_of.size(); ++v) {
+    if(mesh.is_dead(static_cast<Vertex_id>(v))) continue; // a removed vertex: in no cell
     vertex_of[v] = tds.create_vertex();
     vertex_of[v]->set_point(to_target_point<typename Target::Point>(source.point_of(static_cast<Vertex_id>(v))));
   }

@@ -27,7 +27,8 @@
 // carved, the top bit of v[1] a tetrahedron found outside that cavity.  Live
 // tetrahedra carry no marks between insertions, so every reader outside the
 // kernel sees plain vertex ids.  Free slots are kept on a free list;
-// iterators skip them.
+// iterators skip them.  Removed vertices keep dead records (Vertex_record):
+// their ids are never given again, so iterators skip them too.
 
 #ifndef CGAL_FDT3_INTERNAL_FLAT_STORAGE_H
 #define CGAL_FDT3_INTERNAL_FLAT_STORAGE_H
@@ -211,7 +212,11 @@ private:
 // A vertex: its coordinates and a scratch word.  During an insertion the
 // scratch word holds the vertex's local number on the cavity boundary (tagged
 // with the insertion's stamp, so it never needs clearing); between insertions
-// it is free for other passes (e.g. the incident-cell cache).
+// it is 0.  A removed vertex keeps its record (ids of the others must not
+// change, as CGAL's handles do not) with `dead_vertex` in the scratch word:
+// it is in no tetrahedron, so the kernel never reads the word, and its
+// coordinates stay finite for the passes that read every record.
+constexpr std::uint64_t dead_vertex = ~std::uint64_t(0);
 struct Vertex_record
 {
   double xyz[3];
@@ -236,11 +241,28 @@ struct Flat_storage
   std::vector<Tet_id> free_tets;       // free slots available for reuse
   std::size_t live_tets = 0;           // slots in use (finite and ghost)
   std::size_t ghost_tets = 0;          // slots in use that have the ghost vertex
+  std::size_t dead_vertices = 0;       // removed vertices whose records stay
 
   std::size_t number_of_slots() const { return tets.size(); }
   bool is_live(Tet_id t) const { return (tets[t].v[0] & mark_bit) == 0; }
   bool is_ghost(Tet_id t) const { return tets[t].v[3] == ghost_vertex; }
   const double* point(Vertex_id v) const { return vertices[v].xyz; }
+  bool is_dead(Vertex_id v) const { return vertices[v].scratch == dead_vertex; }
+  std::size_t live_vertices() const { return vertices.size() - dead_vertices; }
+  void kill_vertex(Vertex_id v)
+  {
+    CGAL_precondition(!is_dead(v));
+    vertices[v].scratch = dead_vertex;
+    ++dead_vertices;
+  }
+  // A dead record comes back with point p (move keeps the vertex's id).
+  void revive_vertex(Vertex_id v, const double* p)
+  {
+    CGAL_precondition(is_dead(v));
+    for(int a = 0; a < 3; ++a) vertices[v].xyz[a] = p[a];
+    vertices[v].scratch = 0;
+    --dead_vertices;
+  }
   Vertex_id vertex(Tet_id t, int i) const { return tets[t].v[i]; }
   Vertex_id* vertex_ids(Tet_id t) { return tets[t].v; }
   const Vertex_id* vertex_ids(Tet_id t) const { return tets[t].v; }
@@ -264,6 +286,7 @@ struct Flat_storage
     free_tets.clear();
     live_tets = 0;
     ghost_tets = 0;
+    dead_vertices = 0;
   }
 
   // `slots` tetrahedron slots in all; new slots are free (marked) until
@@ -302,6 +325,12 @@ struct Flat_storage
     for(Tet_id t = 0; t < number_of_slots(); ++t)
       if(is_live(t)) return t;
     return 0;
+  }
+
+  void free_tet(Tet_id t)
+  {
+    mark_free(t);
+    free_tets.push_back(t);
   }
 
   // A slot for a new tetrahedron: a freed one if any, else a new one at the end.

@@ -138,12 +138,14 @@ public:
     cells_.clear();
     vertices_.clear();
     renamed_.clear();
+    fresh_.clear();
     copy_all_cells(m);
   }
   void stop()
   {
     delaunay_.reset();
     std::vector<Renamed_cell>().swap(renamed_);
+    std::vector<Tet_id>().swap(fresh_);
     std::vector<Reference_cell>().swap(cells_);
     std::vector<Reference_vertex>().swap(vertices_);
   }
@@ -190,6 +192,7 @@ public:
   Vertex_id insert(Flat_storage& m, Vertex_id v, const Location& where, std::vector<Tet_id>* around)
   {
     const Reference_point p = point(m, v);
+    fresh_.clear();
     const int dimension_before = delaunay_->dimension();
     const std::size_t vertices_before = delaunay_->number_of_vertices();
     // In dimension 2 CGAL replaces the cells in conflict with p; below, it
@@ -200,9 +203,7 @@ public:
       delaunay_->find_conflicts(p, where.cell, Emptyset_iterator(), std::back_inserter(deleted));
     const Reference_vertex r = delaunay_->insert(p, where.type, where.cell, where.li, where.lj);
     if(delaunay_->number_of_vertices() != vertices_before) {
-      CGAL_assertion(v == vertices_.size());
-      r->info() = v;
-      vertices_.push_back(r);
+      set_vertex(v, r);
       if(delaunay_->dimension() != dimension_before) copy_all_cells(m);
       else copy_new_cells(m, deleted, r);
     }
@@ -216,19 +217,38 @@ public:
   void insert_in_hole(Flat_storage& m, Vertex_id v, const std::vector<Tet_id>& hole, Tet_id begin, int i,
                       std::vector<Tet_id>* around)
   {
-    CGAL_precondition(delaunay_->dimension() == 2 && v == vertices_.size());
+    CGAL_precondition(delaunay_->dimension() == 2);
     std::vector<Reference_cell> deleted;
     for(Tet_id t : hole) deleted.push_back(cells_[t]);
     const Reference_vertex r =
         delaunay_->insert_in_hole(point(m, v), deleted.begin(), deleted.end(), cells_[begin], i);
-    r->info() = v;
-    vertices_.push_back(r);
+    set_vertex(v, r);
     copy_new_cells(m, deleted, r);
     if(around) slots_around(r, *around);
   }
 
-  // The triangulation of the vertices of m, which are distinct and span
-  // less than 3D (a file read by Triangulation_io.h), in the order of their ids.
+  // CGAL's remove(v): its cells are copied again (the others keep their
+  // slots); `fresh` receives the slots of the cells CGAL made.  m's record
+  // of v is left to the caller.
+  void remove(Flat_storage& m, Vertex_id v, std::vector<Tet_id>& fresh)
+  {
+    CGAL_precondition(v < vertices_.size() && vertices_[v] != Reference_vertex());
+    fresh_.clear();
+    delaunay_->remove(vertices_[v]);
+    vertices_[v] = Reference_vertex();
+    copy_all_cells(m);
+    take_fresh_slots(fresh);
+  }
+  // The slots given to new CGAL cells by the last insertion, removal or rebuild.
+  void take_fresh_slots(std::vector<Tet_id>& fresh)
+  {
+    fresh.clear();
+    fresh.swap(fresh_);
+  }
+
+  // The triangulation of the live vertices of m, which are distinct and span
+  // less than 3D (a file read by Triangulation_io.h, or what a removal
+  // leaves of a 3D triangulation), in the order of their ids.
   void rebuild(Flat_storage& m)
   {
     m.tets.clear();
@@ -238,6 +258,7 @@ public:
     start(m);
     Reference_cell hint;
     for(Vertex_id v = 0; v < m.vertices.size(); ++v) {
+      if(m.is_dead(v)) continue;
       const Vertex_id inserted = insert(m, v, hint, nullptr);
       CGAL_assertion(inserted == v);
       hint = vertex(inserted)->cell();
@@ -254,8 +275,15 @@ public:
       return false;
     };
     if(!active()) return fail("no CGAL triangulation below dimension 3");
-    if(vertices_.size() != m.vertices.size()) return fail("CGAL's triangulation has another number of vertices");
-    for(Vertex_id v = 0; v < vertices_.size(); ++v) {
+    if(vertices_.size() > m.vertices.size() || delaunay_->number_of_vertices() != m.live_vertices())
+      return fail("CGAL's triangulation has another number of vertices");
+    for(Vertex_id v = 0; v < m.vertices.size(); ++v) {
+      const bool in_cgal = v < vertices_.size() && vertices_[v] != Reference_vertex();
+      if(m.is_dead(v)) {
+        if(in_cgal) return fail("removed vertex " + std::to_string(v) + " is in CGAL's triangulation");
+        continue;
+      }
+      if(!in_cgal) return fail("vertex " + std::to_string(v) + " is not in CGAL's triangulation");
       const double* p = m.point(v);
       if(id(vertices_[v]) != v || vertices_[v]->point() != Reference_point(p[0], p[1], p[2]))
         return fail("vertex " + std::to_string(v) + " is not CGAL's vertex of that id");
@@ -283,13 +311,20 @@ private:
   void index_handles()
   {
     cells_.clear();
-    vertices_.assign(delaunay_->number_of_vertices(), Reference_vertex());
-    for(auto v = delaunay_->finite_vertices_begin(); v != delaunay_->finite_vertices_end(); ++v)
-      vertices_[v->info()] = v;
+    vertices_.clear();
+    for(auto v = delaunay_->finite_vertices_begin(); v != delaunay_->finite_vertices_end(); ++v) set_vertex(v->info(), v);
     for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c) {
       if(c->info().id >= cells_.size()) cells_.resize(c->info().id + 1);
       cells_[c->info().id] = c;
     }
+  }
+
+  // Ids of removed vertices have no CGAL vertex: vertices_ has null handles.
+  void set_vertex(Vertex_id v, Reference_vertex r)
+  {
+    r->info() = v;
+    if(v >= vertices_.size()) vertices_.resize(v + 1, Reference_vertex());
+    vertices_[v] = r;
   }
 
   // The cells of r in CGAL's order of insert_and_give_new_cells.
@@ -367,6 +402,7 @@ private:
       c->info().id = t;
       if(t >= cells_.size()) cells_.resize(t + 1);
       cells_[t] = c;
+      fresh_.push_back(t);
     }
     std::vector<Renamed_cell> before;
     for(Tet_id t : kept) {
@@ -415,6 +451,7 @@ private:
   std::vector<Reference_cell> cells_;      // by slot; null for a free slot
   std::vector<Reference_vertex> vertices_; // by vertex id
   std::vector<Renamed_cell> renamed_;
+  std::vector<Tet_id> fresh_;              // slots of new cells, see take_fresh_slots
 };
 
 // Checks the cells of a triangulation of dimension -1 to 2: CGAL's
@@ -429,7 +466,10 @@ inline bool lower_dimensional_cells_are_valid(const Flat_storage& m, int dimensi
     if(why) *why = message;
     return false;
   };
-  const std::size_t n = m.vertices.size();
+  const std::size_t n = m.live_vertices();
+  std::vector<Vertex_id> live_ids; // the ids of the live vertices
+  for(Vertex_id v = 0; v < m.vertices.size(); ++v)
+    if(!m.is_dead(v)) live_ids.push_back(v);
   if(dimension == -1) {
     if(n != 0 || m.live_tets != 1 || m.ghost_tets != 1) return fail("vertices or cells in dimension -1");
     const Tet_id t = m.first_live_tet();
@@ -442,7 +482,7 @@ inline bool lower_dimensional_cells_are_valid(const Flat_storage& m, int dimensi
   if(m.live_tets != expected_cells) return fail("wrong number of cells for dimension " + std::to_string(dimension));
 
   std::size_t live = 0, ghosts = 0;
-  std::vector<char> used(n, 0);
+  std::vector<char> used(m.vertices.size(), 0);
   for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
     if(!m.is_live(t)) continue;
     ++live;
@@ -454,7 +494,7 @@ inline bool lower_dimensional_cells_are_valid(const Flat_storage& m, int dimensi
         if(v != no_vertex) return fail(at + "vertex slot above the dimension is used");
         continue;
       }
-      if(v != ghost_vertex && v >= n) return fail(at + "vertex id out of range");
+      if(v != ghost_vertex && (v >= m.vertices.size() || m.is_dead(v))) return fail(at + "vertex id out of range");
       if(v != ghost_vertex) used[v] = 1;
       for(int j = 0; j < i; ++j)
         if(r.v[j] == v) return fail(at + "repeated vertex");
@@ -476,7 +516,7 @@ inline bool lower_dimensional_cells_are_valid(const Flat_storage& m, int dimensi
     }
   }
   if(live != m.live_tets || ghosts != m.ghost_tets) return fail("cell counts out of date");
-  for(std::size_t v = 0; v < n; ++v)
+  for(Vertex_id v : live_ids)
     if(!used[v]) return fail("vertex " + std::to_string(v) + " is in no cell");
 
   // One connected cycle / sphere.
@@ -502,8 +542,9 @@ inline bool lower_dimensional_cells_are_valid(const Flat_storage& m, int dimensi
   if(dimension == 0) return ghosts == 1 ? true : fail("dimension 0 needs one infinite cell");
   if(dimension == 1) {
     if(ghosts != 2) return fail("dimension 1 needs two infinite segments");
-    for(Vertex_id v = 2; v < n; ++v)
-      if(!k.collinear_3_object()(point(0), point(1), point(v))) return fail("vertices of dimension 1 not collinear");
+    for(std::size_t i = 2; i < n; ++i)
+      if(!k.collinear_3_object()(point(live_ids[0]), point(live_ids[1]), point(live_ids[i])))
+        return fail("vertices of dimension 1 not collinear");
     for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
       if(!m.is_live(t)) continue;
       const Vertex_id a = m.vertex(t, 0), b = m.vertex(t, 1), c = m.vertex(m.neighbor(t, 0), 1);
@@ -520,7 +561,7 @@ inline bool lower_dimensional_cells_are_valid(const Flat_storage& m, int dimensi
   const double* ref[3] = {m.point(m.vertex(first, 0)), m.point(m.vertex(first, 1)), m.point(m.vertex(first, 2))};
   const int reference_orientation = predicates_detail::coplanar_orientation_exact(ref[0], ref[1], ref[2]);
   if(reference_orientation == 0) return fail("flat finite triangle");
-  for(Vertex_id v = 0; v < n; ++v)
+  for(Vertex_id v : live_ids)
     if(orientation(ref[0], ref[1], ref[2], m.point(v)) != 0) return fail("vertices of dimension 2 not coplanar");
   for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
     if(!m.is_live(t)) continue;

@@ -68,6 +68,7 @@ public:
   Geom_traits traits;
   Triangulation_core core;
   mutable std::vector<Tet_id> incident_cells; // lazily built v->cell() cache (dimension 3)
+  mutable std::size_t walks_without_incident_cells = 0; // removals that located their vertex instead
   Vertex_infos<Vertex_info> vertex_infos;
   Cell_infos<Cell_info> cell_infos;
   User_vertices<typename Tr::User_vertex_record> user_vertices;
@@ -80,7 +81,7 @@ public:
   // insertion order: all get Info().)
   void vertices_added()
   {
-    const std::size_t n = core.number_of_vertices();
+    const std::size_t n = core.vertex_slots();
     vertex_infos.resize(n);
     user_vertices.resize(this, n);
     if(core.lower.active()) {
@@ -95,6 +96,31 @@ public:
     }
     dimension_seen_ = dimension();
     vertices_seen_ = n;
+  }
+
+  // After a removal or a move: `made` are the slots of the new cells, whose
+  // infos and user records start afresh (a slot may come back to a cell with
+  // the vertices it had before the vertex was inserted: the vertex ids alone
+  // no longer tell).  The v->cell() cache follows the new cells, which hold
+  // every vertex whose cached cell went.
+  void cells_made(const std::vector<Tet_id>& made)
+  {
+    for(Tet_id t : made) {
+      cell_infos.forget(t);
+      user_cells.forget(t);
+    }
+    vertices_added();
+    if(incident_cells.empty()) return;
+    if(dimension() < 3) {
+      incident_cells.clear();
+      return;
+    }
+    incident_cells.resize(core.vertex_slots(), Tet_id(-1));
+    for(Tet_id t : made)
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_id w = core.mesh.vertex(t, i);
+        if(w != ghost_vertex) incident_cells[w] = t;
+      }
   }
 
   // ---------------------------------------------------------------- read by handles and iterators
@@ -200,7 +226,7 @@ private:
   void build_incident_cells() const
   {
     const Flat_storage& m = core.mesh;
-    incident_cells.assign(core.number_of_vertices(), Tet_id(-1));
+    incident_cells.assign(core.vertex_slots(), Tet_id(-1));
     for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
       if(!m.is_live(t)) continue;
       for(int i = 0; i < 4; ++i) {

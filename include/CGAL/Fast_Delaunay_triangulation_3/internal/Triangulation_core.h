@@ -11,7 +11,8 @@
 // (Lower_dimensions.h); the first insertion that makes the points span 3D
 // drops it and builds the tetrahedra of all of them.  Vertex ids never change
 // once given, except that a bulk insertion removes its own duplicates before
-// returning.
+// returning; a removed vertex leaves a dead record (Flat_storage.h), which
+// only a move of that vertex revives.
 
 #ifndef CGAL_FDT3_INTERNAL_TRIANGULATION_CORE_H
 #define CGAL_FDT3_INTERNAL_TRIANGULATION_CORE_H
@@ -22,6 +23,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_removal.h>
 
 #include <algorithm>
 #include <chrono>
@@ -75,7 +77,9 @@ public:
   }
   Insertion_report last_report;
 
-  std::size_t number_of_vertices() const { return mesh.vertices.size(); }
+  // Live vertices; vertex_slots() counts the dead records too (ids are below it).
+  std::size_t number_of_vertices() const { return mesh.live_vertices(); }
+  std::size_t vertex_slots() const { return mesh.vertices.size(); }
 
   Triangulation_core()
   {
@@ -138,11 +142,11 @@ public:
       if(vertex_of_input) vertex_of_input->clear();
       return 0;
     }
-    if(number_of_vertices() + n > max_vertices)
+    if(vertex_slots() + n > max_vertices)
       throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^31 - 2 vertices");
 
     const Clock::time_point t0 = Clock::now();
-    const std::size_t first_new = number_of_vertices();
+    const std::size_t first_new = vertex_slots();
     Brio_order order = brio_order(xyz, n, seed, partitions);
     mesh.vertices.resize(first_new + n);
     write_vertex_records(xyz, order.order, first_new);
@@ -287,11 +291,106 @@ public:
     return v;
   }
 
+  // Removes live vertex v, whose record stays dead.  Dimension 3: `start`
+  // is a tetrahedron of v; the star of v is re-triangulated in place
+  // (Vertex_removal.h) and new_cells receives the new tetrahedra; every
+  // other tetrahedron keeps its slot.  When the remaining points no longer
+  // span 3D, and below dimension 3, CGAL's triangulation beside the arrays
+  // takes over (new_cells: the slots of the cells it made).
+  void remove(Vertex_id v, Tet_id start, std::vector<Tet_id>& new_cells)
+  {
+    CGAL_precondition(v < vertex_slots() && !mesh.is_dead(v));
+    new_cells.clear();
+    if(dimension < 3) {
+      lower.remove(mesh, v, new_cells);
+      mesh.kill_vertex(v);
+      dimension = lower.delaunay().dimension();
+      return;
+    }
+    Removal_hole hole;
+    carve_hole(mesh, v, start, hole);
+    if(!link_is_coplanar(mesh, hole)) {
+      fill_hole_from_link(hole, new_cells);
+    } else if(hole.finite_star == mesh.live_tets - mesh.ghost_tets) {
+      // Every finite tetrahedron has v and the others are coplanar.
+      mesh.kill_vertex(v);
+      lower.rebuild(mesh);
+      dimension = lower.delaunay().dimension();
+      lower.take_fresh_slots(new_cells);
+      hint_ = 0;
+      return;
+    } else {
+      fill_flat_hole(mesh, hole, new_cells);
+    }
+    mesh.kill_vertex(v);
+    hint_ = new_cells.front();
+  }
+
+  // Moves live vertex v to p (finite, not v's point), keeping its id: v is
+  // removed, then its record revived at p and inserted.  Returns v, or the
+  // vertex already at p (v then stays removed: CGAL's move).  new_cells: the
+  // slots of every cell made by either step that is still there (each once).
+  Vertex_id move(Vertex_id v, const double* p, Tet_id start, std::vector<Tet_id>& new_cells)
+  {
+    std::vector<Tet_id> made;
+    remove(v, start, made);
+    const Vertex_id moved = reinsert(v, p, new_cells);
+    made.insert(made.end(), new_cells.begin(), new_cells.end());
+    std::sort(made.begin(), made.end());
+    made.erase(std::unique(made.begin(), made.end()), made.end());
+    new_cells.clear();
+    for(Tet_id t : made)
+      if(t < mesh.number_of_slots() && mesh.is_live(t)) new_cells.push_back(t);
+    return moved;
+  }
+
   // Exact validity: combinatorics, orientation and the (perturbed) local
   // Delaunay property on every facet.  Writes the first problem to `why`.
   bool is_valid(std::string* why = nullptr) const;
 
 private:
+  // The dead record of v back at p, inserted with its id; returns v, or
+  // the vertex at p, v's record dead again.  new_cells: the Delaunay ball in
+  // 3D, else every cell made.
+  Vertex_id reinsert(Vertex_id v, const double* p, std::vector<Tet_id>& new_cells)
+  {
+    mesh.revive_vertex(v, p);
+    extend_bounding_box_with(v);
+    Vertex_id simplex[4];
+    if(dimension == 3) {
+      Insertion_scratch scratch;
+      Delaunay_kernel<> kernel = sequential_kernel(scratch);
+      Tet_id hint = mesh.is_live(hint_) ? hint_ : mesh.first_live_tet();
+      Vertex_id existing = ghost_vertex;
+      const Insertion_result result = kernel.insert(v, hint, existing);
+      hint_ = hint;
+      new_cells.assign(scratch.ball.begin(), scratch.ball.end());
+      finish_single_insertion(scratch);
+      if(result == Insertion_result::duplicate) {
+        mesh.kill_vertex(v);
+        return existing;
+      }
+    } else if(extend_affine_hull(0, -1, simplex) == 3) {
+      lower.stop();
+      create_initial_tetrahedron(simplex);
+      dimension = 3;
+      mesh.reserve_tets(expected_tets(number_of_vertices()));
+      std::vector<Vertex_id> no_duplicates; // the live vertices are distinct
+      insert_range(0, vertex_slots(), static_cast<Vertex_id>(vertex_slots()), no_duplicates, simplex);
+      new_cells.clear();
+      for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
+        if(mesh.is_live(t)) new_cells.push_back(t);
+    } else {
+      const Vertex_id inserted = lower.insert(mesh, v, Lower_dimensional_triangulation::Reference_cell(), nullptr);
+      dimension = lower.delaunay().dimension();
+      lower.take_fresh_slots(new_cells);
+      if(inserted != v) {
+        mesh.kill_vertex(v);
+        return inserted;
+      }
+    }
+    return v;
+  }
   typedef std::chrono::steady_clock Clock;
   static double seconds(Clock::time_point a, Clock::time_point b)
   {
@@ -301,9 +400,9 @@ private:
   // The record of one new vertex at p, inside the bounding box of the filters.
   Vertex_id append_vertex(const double* p)
   {
-    if(number_of_vertices() + 1 > max_vertices)
+    if(vertex_slots() + 1 > max_vertices)
       throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^31 - 2 vertices");
-    const Vertex_id v = static_cast<Vertex_id>(number_of_vertices());
+    const Vertex_id v = static_cast<Vertex_id>(vertex_slots());
     Vertex_record r;
     r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
     r.scratch = 0;
@@ -340,12 +439,15 @@ private:
     last_report.insertion_seconds += seconds(t0, Clock::now());
   }
 
-  static std::vector<Vertex_id> vertex_list(std::size_t begin, std::size_t end, const Vertex_id* skip)
+  // Dead records are in no list: they are in no tetrahedron.
+  std::vector<Vertex_id> vertex_list(std::size_t begin, std::size_t end, const Vertex_id* skip) const
   {
     std::vector<Vertex_id> list;
     list.reserve(end - begin);
+    const bool any_dead = mesh.dead_vertices != 0;
     for(std::size_t i = begin; i < end; ++i) {
       const Vertex_id v = static_cast<Vertex_id>(i);
+      if(any_dead && mesh.is_dead(v)) continue;
       if(!skip || (v != skip[0] && v != skip[1] && v != skip[2] && v != skip[3])) list.push_back(v);
     }
     return list;
@@ -372,11 +474,36 @@ private:
 
   void extend_bounding_box(std::size_t first)
   {
-    for(std::size_t v = first; v < number_of_vertices(); ++v)
+    for(std::size_t v = first; v < vertex_slots(); ++v)
       for(int a = 0; a < 3; ++a) {
         box_lo_[a] = std::min(box_lo_[a], mesh.vertices[v].xyz[a]);
         box_hi_[a] = std::max(box_hi_[a], mesh.vertices[v].xyz[a]);
       }
+  }
+  void extend_bounding_box_with(Vertex_id v)
+  {
+    for(int a = 0; a < 3; ++a) {
+      box_lo_[a] = std::min(box_lo_[a], mesh.vertices[v].xyz[a]);
+      box_hi_[a] = std::max(box_hi_[a], mesh.vertices[v].xyz[a]);
+    }
+  }
+  // The Delaunay triangulation of the link of the hole (its points, in the
+  // same predicates and perturbation) fills the hole.
+  void fill_hole_from_link(const Removal_hole& hole, std::vector<Tet_id>& new_cells)
+  {
+    std::vector<double> xyz;
+    xyz.reserve(3 * hole.link.size());
+    for(Vertex_id w : hole.link) xyz.insert(xyz.end(), mesh.point(w), mesh.point(w) + 3);
+    Triangulation_core small;
+    small.set_sub_determinants(false);
+    std::vector<Vertex_id> small_of_link;
+    small.insert(xyz.data(), hole.link.size(), &small_of_link);
+    CGAL_assertion(small.dimension == 3 && small.number_of_vertices() == hole.link.size());
+    std::vector<Vertex_id> global_of_small(hole.link.size());
+    for(std::size_t k = 0; k < hole.link.size(); ++k) global_of_small[small_of_link[k]] = hole.link[k];
+    if(!fill_hole(mesh, hole, small.mesh, small_of_link, global_of_small, new_cells))
+      throw std::logic_error("Fast_Delaunay_triangulation_3: a facet of the hole of a removed vertex is not in "
+                             "the Delaunay triangulation of its link");
   }
   void reset_bounding_box()
   {
@@ -394,7 +521,7 @@ private:
   void insert_new_vertices(Vertex_id first_new, const std::vector<std::size_t>& round_end,
                            bool rounds_in_curve_order, std::vector<Vertex_id>& duplicate_of, const Vertex_id* skip)
   {
-    const Vertex_id end = static_cast<Vertex_id>(number_of_vertices());
+    const Vertex_id end = static_cast<Vertex_id>(vertex_slots());
     if(partitions <= 1) {
       insert_range(first_new, end, first_new, duplicate_of, skip);
       return;
@@ -442,7 +569,7 @@ private:
     create_initial_tetrahedron(simplex);
     dimension = 3;
     last_report.init_seconds = seconds(t0, Clock::now());
-    mesh.reserve_tets(expected_tets(number_of_vertices()));
+    mesh.reserve_tets(expected_tets(vertex_slots()));
     insert_range(0, first_new, first_new, duplicate_of, simplex);
     insert_new_vertices(first_new, round_end, rounds_in_curve_order, duplicate_of, simplex);
   }
@@ -494,8 +621,9 @@ private:
   // predicates).  Returns the dimension of the hull of all vertices.
   int extend_affine_hull(Vertex_id first, int spanned, Vertex_id simplex[4]) const
   {
-    const Vertex_id count = static_cast<Vertex_id>(number_of_vertices());
+    const Vertex_id count = static_cast<Vertex_id>(vertex_slots());
     for(Vertex_id v = first; v < count && spanned < 3; ++v) {
+      if(mesh.is_dead(v)) continue;
       const double* p = mesh.point(v);
       const bool independent =
           spanned == -1 ||
@@ -603,7 +731,7 @@ inline bool Triangulation_core::is_valid(std::string* why) const
   if(dimension < 3) return lower_dimensional_cells_are_valid(mesh, dimension, why) && lower.is_copied_into(mesh, why);
   const Flat_storage& m = mesh;
   std::size_t live = 0, ghosts = 0;
-  std::vector<char> used(number_of_vertices(), 0);
+  std::vector<char> used(vertex_slots(), 0);
   for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
     if(!m.is_live(t)) continue;
     ++live;
@@ -614,7 +742,8 @@ inline bool Triangulation_core::is_valid(std::string* why) const
         if(i != 3) return fail(at + "ghost vertex not in slot 3");
         continue;
       }
-      if(v >= number_of_vertices()) return fail(at + "vertex id out of range");
+      if(v >= vertex_slots()) return fail(at + "vertex id out of range");
+      if(m.is_dead(v)) return fail(at + "removed vertex " + std::to_string(v));
       used[v] = 1;
       for(int j = 0; j < i; ++j)
         if(m.vertex(t, j) == v) return fail(at + "repeated vertex");
@@ -659,7 +788,7 @@ inline bool Triangulation_core::is_valid(std::string* why) const
   }
   if(live != m.live_tets || ghosts != m.ghost_tets) return fail("tetrahedron counts out of date");
   for(std::size_t v = 0; v < used.size(); ++v)
-    if(!used[v]) return fail("vertex " + std::to_string(v) + " is in no tetrahedron");
+    if(!used[v] && !m.is_dead(Vertex_id(v))) return fail("vertex " + std::to_string(v) + " is in no tetrahedron");
   return true;
 }
 

@@ -66,8 +66,13 @@ template <class Point_of>
 void write_triangulation_3(std::ostream& os, const Flat_storage& mesh, Point_of point_of)
 {
   const bool ascii = IO::is_ascii(os);
-  const std::size_t n = mesh.vertices.size();
+  const std::size_t n = mesh.live_vertices();
   const std::size_t slots = mesh.number_of_slots();
+  // Vertices are numbered in id order, skipping removed ones (1 + index:
+  // 0 is the infinite vertex).
+  std::vector<std::size_t> index_of_vertex(mesh.vertices.size(), 0);
+  for(std::size_t v = 0, k = 0; v < mesh.vertices.size(); ++v)
+    if(!mesh.is_dead(static_cast<Vertex_id>(v))) index_of_vertex[v] = ++k;
   auto put = [&](std::size_t value, char separator) {
     if(ascii) os << value << separator;
     else CGAL::write(os, value);
@@ -77,7 +82,8 @@ void write_triangulation_3(std::ostream& os, const Flat_storage& mesh, Point_of 
     CGAL::write(os, int(3));
     CGAL::write(os, n);
   }
-  for(std::size_t v = 0; v < n; ++v) {
+  for(std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if(mesh.is_dead(static_cast<Vertex_id>(v))) continue;
     os << point_of(static_cast<Vertex_id>(v));
     if(ascii) os << '\n';
   }
@@ -92,7 +98,7 @@ void write_triangulation_3(std::ostream& os, const Flat_storage& mesh, Point_of 
     if(!mesh.is_live(t)) continue;
     for(int i = 0; i < 4; ++i) {
       const Vertex_id v = mesh.vertex(t, i);
-      put(v == ghost_vertex ? 0 : std::size_t(v) + 1, i == 3 ? '\n' : ' ');
+      put(v == ghost_vertex ? 0 : index_of_vertex[v], i == 3 ? '\n' : ' ');
     }
   }
   for(Tet_id t = 0; t < slots; ++t) {

@@ -313,6 +313,12 @@ public:
     }
   }
 
+  // Slot t holds a new cell: a default record when next read.
+  void forget(Tet_id t)
+  {
+    if(t < records_.size()) cells_[t] = std::array<Vertex_id, 4>{{ghost_vertex, ghost_vertex, ghost_vertex, ghost_vertex}};
+  }
+
   void clear()
   {
     records_.clear();
@@ -331,6 +337,7 @@ class User_cells<void>
 public:
   void rename(const Flat_storage&, Tet_id, const Vertex_id*) {}
   void lift(const Flat_storage&, const Lifted_cells&) {}
+  void forget(Tet_id) {}
   void clear() {}
 };
 

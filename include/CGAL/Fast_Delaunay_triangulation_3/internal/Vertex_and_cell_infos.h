@@ -13,7 +13,9 @@
 //                 whose vertices changed holds a new cell: its info is reset
 //                 to Info() when next read.  A Delaunay cell destroyed by an
 //                 insertion never comes back (it is in conflict with the new
-//                 vertex for good), so equal vertex ids mean the same cell.
+//                 vertex for good), so equal vertex ids mean the same cell;
+//                 a removal may bring one back, so it resets the entries of
+//                 the slots it fills (forget).
 //                 Below dimension 3 CGAL also changes some cells in place
 //                 (Lower_dimensional_triangulation::Renamed_cell): their
 //                 infos are re-keyed to the new vertex ids.  When one
@@ -178,6 +180,12 @@ public:
     }
   }
 
+  // Slot t holds a new cell: its info is Info() when next read.
+  void forget(Tet_id t)
+  {
+    if(t < entries_.size()) entries_[t] = Entry();
+  }
+
   void clear() { entries_.clear(); }
 
 private:
@@ -196,6 +204,7 @@ class Cell_infos<void>
 public:
   void rename(const Flat_storage&, Tet_id, const Vertex_id*) {}
   void lift(const Flat_storage&, const Lifted_cells&) {}
+  void forget(Tet_id) {}
   void clear() {}
 };
 
