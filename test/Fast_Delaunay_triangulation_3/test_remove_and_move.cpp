@@ -23,7 +23,7 @@
 
 using namespace fdt3_test;
 
-namespace {
+namespace test_remove_and_move {
 
 typedef CGAL::Triangulation_vertex_base_with_info_3<int, K> Vb;
 typedef CGAL::Triangulation_cell_base_with_info_3<int, K, CGAL::Delaunay_triangulation_cell_base_3<K>> Cb;
@@ -161,8 +161,6 @@ std::vector<Point> grid(int k)
       for(int l = 0; l < k; ++l) p.emplace_back(i, j, l);
   return p;
 }
-
-} // namespace
 
 TEST(Remove, RandomPointsInsertRemoveMove)
 {
@@ -456,3 +454,5 @@ TEST(Remove, ParallelInsertionAfterRemovals)
   t.insert_range(random_points(3000, rng));
   t.check("parallel insertion after removals");
 }
+
+} // namespace test_remove_and_move
