@@ -200,6 +200,73 @@ TYPED_TEST(Tds_interface, CreateVertexThenInsertInHoleGivesCgalCells)
   }
 }
 
+// Point after point through the conflict zone, every other one with a
+// created vertex (the pattern of CGAL's own test suite), from one point on:
+// points that lift the dimension go through insert().  tds().is_valid()
+// after each, and at the end CGAL's cells.
+TYPED_TEST(Tds_interface, InsertInHoleLoopThroughDimensions)
+{
+  typedef typename TypeParam::Cell_handle Cell_handle;
+  typedef typename TypeParam::Facet Facet;
+  std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0), Point(0.5, 0.25, 0)};
+  for(const Xyz& p : uniform_points(60, 71)) points.push_back(Point(p.x, p.y, p.z));
+  TypeParam tr;
+  for(std::size_t n = 0; n < points.size(); ++n) {
+    const Point& p = points[n];
+    typename TypeParam::Locate_type lt;
+    int li, lj;
+    const Cell_handle c = tr.locate(p, lt, li, lj);
+    if(lt == TypeParam::VERTEX) continue;
+    if(tr.dimension() < 2 || lt == TypeParam::OUTSIDE_AFFINE_HULL) {
+      tr.insert(p);
+    } else {
+      std::vector<Facet> boundary;
+      std::vector<Cell_handle> cells;
+      tr.find_conflicts(p, c, std::back_inserter(boundary), std::back_inserter(cells));
+      if(n % 2 == 0) {
+        tr.insert_in_hole(p, cells.begin(), cells.end(), boundary.front().first, boundary.front().second);
+      } else {
+        const typename TypeParam::Vertex_handle v = tr.tds().create_vertex();
+        tr.insert_in_hole(p, cells.begin(), cells.end(), boundary.front().first, boundary.front().second, v);
+      }
+    }
+    ASSERT_TRUE(tr.tds().is_valid(true)) << "after point " << n << ", dimension " << tr.dimension();
+  }
+  EXPECT_TRUE(tr.is_valid(true));
+  Cgal_dt cgal(points.begin(), points.end());
+  EXPECT_TRUE(all_cell_keys(tr) == all_cell_keys(cgal));
+  EXPECT_EQ(tr.number_of_vertices(), cgal.number_of_vertices());
+}
+
+// Moves that change the dimension both ways (CGAL's test suite checks
+// tds().is_valid() after each): the TDS stays valid in every dimension.
+TYPED_TEST(Tds_interface, MovesThroughDimensionsKeepTdsValid)
+{
+  TypeParam tr;
+  const typename TypeParam::Vertex_handle a = tr.insert(Point(0, 0, 0));
+  tr.insert(Point(0, 1, 0));
+  EXPECT_TRUE(tr.tds().is_valid(true));
+  tr.move_if_no_collision(a, Point(0, 2, 1));
+  EXPECT_TRUE(tr.tds().is_valid(true));
+  EXPECT_EQ(tr.dimension(), 1);
+  const typename TypeParam::Vertex_handle b = tr.insert(Point(0, 3, 5));
+  EXPECT_EQ(tr.dimension(), 2);
+  const typename TypeParam::Vertex_handle c = tr.insert(Point(0, 1, 1));
+  tr.move_if_no_collision(b, Point(1, 1, 1));
+  EXPECT_EQ(tr.dimension(), 3);
+  EXPECT_TRUE(tr.tds().is_valid(true));
+  tr.move_if_no_collision(b, Point(0, 2, 0));
+  EXPECT_EQ(tr.dimension(), 2);
+  EXPECT_TRUE(tr.tds().is_valid(true));
+  tr.move_if_no_collision(c, Point(0, 3, 0));
+  EXPECT_EQ(tr.dimension(), 2);
+  EXPECT_TRUE(tr.tds().is_valid(true));
+  tr.move_if_no_collision(a, Point(0, 4, 0));
+  EXPECT_EQ(tr.dimension(), 1);
+  EXPECT_TRUE(tr.tds().is_valid(true));
+  EXPECT_TRUE(tr.is_valid(true));
+}
+
 // A 2-3 flip of a finite interior facet, then the 3-2 flip of the new edge:
 // one cell more, then the same cells as before.  The flips are
 // combinatorial: after the first the triangulation is no longer Delaunay
