@@ -1492,6 +1492,7 @@ public:
     }
     anchor_->core.assign(std::move(built), built_dimension);
     anchor_->incident_cells.clear();
+    anchor_->tds.forget_created(); // their records are gone with the old arrays
     // The file carries no infos: every vertex and cell starts with Info().
     anchor_->vertex_infos.clear();
     anchor_->user_vertices.clear();

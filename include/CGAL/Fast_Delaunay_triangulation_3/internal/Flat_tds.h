@@ -69,7 +69,8 @@ public:
   Flat_tds(Anchor* anchor, const Flat_tds& other) : anchor_(anchor), created_(other.created_) {}
   Flat_tds(const Flat_tds&) = delete;
   Flat_tds& operator=(const Flat_tds&) = delete;
-  void clear() { created_.clear(); }
+  // The anchor is cleared (not a TDS member: CGAL's tds().clear() would clear the triangulation).
+  void forget_created() { created_.clear(); }
 
   // ---------------------------------------------------------------- counts
   int dimension() const { return anchor_->dimension(); }
@@ -344,8 +345,7 @@ private:
   {
     Flat_storage& m = mesh();
     if(m.with_sub_determinants)
-      for(Tet_id t : made)
-        if(!m.is_ghost(t)) update_sub_determinants(m, t);
+      for(Tet_id t : made) update_sub_determinants(m, t);
     anchor_->cells_made(made);
   }
   void link(Tet_id t, int i, Facet_code other)

@@ -41,6 +41,7 @@ public:
   typedef typename Tr::Cell_info Cell_info;
   typedef typename Tr::Vertex Vertex;
   typedef typename Tr::Cell Cell;
+
   explicit Storage_anchor(const Geom_traits& gt) : traits(gt), tds(this) {}
   // User vertex records know the anchor they belong to: a copy's records
   // must name the copy.
@@ -62,7 +63,7 @@ public:
     cell_infos.clear();
     user_vertices.clear();
     user_cells.clear();
-    tds.clear();
+    tds.forget_created();
     dimension_seen_ = -1;
     vertices_seen_ = 0;
   }
