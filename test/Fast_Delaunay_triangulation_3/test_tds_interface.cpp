@@ -136,6 +136,7 @@ TYPED_TEST(Tds_interface, AdjacencyAndMembershipAreCgalTds)
     Cgal_dt::Vertex_handle w;
     ASSERT_TRUE(tr.is_vertex(p, v) && cgal.is_vertex(p, w));
     EXPECT_TRUE(tr.tds().is_vertex(v));
+    EXPECT_TRUE(tr.tds().is_valid(v));
     EXPECT_EQ(tr.tds().degree(v), cgal.tds().degree(w));
     std::vector<Cell_handle> cells;
     tr.tds().incident_cells(v, std::back_inserter(cells));
@@ -163,6 +164,11 @@ TYPED_TEST(Tds_interface, AdjacencyAndMembershipAreCgalTds)
         tr.tds().is_facet(c->vertex((i + 1) % 4), c->vertex((i + 2) % 4), c->vertex((i + 3) % 4), fc, fi, fj, fk));
     EXPECT_TRUE(fc == c || fc == g.first);
     EXPECT_TRUE(tr.tds().is_cell(c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)));
+    EXPECT_TRUE(tr.tds().is_valid(c));
+    EXPECT_EQ(static_cast<std::size_t>(std::distance(tr.tds().facets().begin(), tr.tds().facets().end())),
+              cgal.tds().number_of_facets());
+    EXPECT_EQ(static_cast<std::size_t>(std::distance(tr.tds().edges().begin(), tr.tds().edges().end())),
+              cgal.tds().number_of_edges());
     // The simplices of CGAL's Triangulation_simplex_3 over the TDS.
     CGAL::Triangulation_simplex_3<typename TypeParam::Triangulation_data_structure> sv(v), sc(c), sf(f);
     EXPECT_EQ(sv.dimension(), 0);
@@ -331,7 +337,9 @@ TYPED_TEST(Tds_interface, FlipTwoThreeThenThreeTwoBack)
   EXPECT_EQ(tr.tds().number_of_cells(), cells + 1);
   EXPECT_TRUE(tr.tds().is_valid(true));
   // CGAL's is_valid() asserts where assertions are on instead of returning false.
-  if(!std::is_same<TypeParam, Cgal_dt>::value || !cgal_assertions_on) EXPECT_FALSE(tr.is_valid());
+  if(!std::is_same<TypeParam, Cgal_dt>::value || !cgal_assertions_on) {
+    EXPECT_FALSE(tr.is_valid());
+  }
   EXPECT_TRUE(tr.tds().is_edge(p, q));
   // Not flippable again: the edge is there now.
   ASSERT_TRUE(tr.tds().is_edge(p, q, c, i, j));

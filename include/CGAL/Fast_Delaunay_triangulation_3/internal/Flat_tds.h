@@ -30,6 +30,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/Iterator_range.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -96,6 +97,10 @@ public:
   Facet_iterator facets_end() const { return Facet_iterator(anchor_, 4 * anchor_->slots_of_faces(2)); }
   Edge_iterator edges_begin() const { return Edge_iterator(anchor_, 0); }
   Edge_iterator edges_end() const { return Edge_iterator(anchor_, 6 * anchor_->slots_of_faces(1)); }
+  typedef Iterator_range<Facet_iterator> Facets;
+  typedef Iterator_range<Edge_iterator> Edges;
+  Facets facets() const { return Facets(facets_begin(), facets_end()); }
+  Edges edges() const { return Edges(edges_begin(), edges_end()); }
 
   // ---------------------------------------------------------------- membership
   bool is_vertex(Vertex_handle v) const
@@ -264,6 +269,31 @@ public:
     std::string why;
     const bool ok = dimension() < 3 ? lower_dimensional_cells_are_valid(mesh(), dimension(), &why) : valid_3(why);
     if(!ok && verbose) std::cerr << "Fast_Delaunay_triangulation_3::tds().is_valid: " << why << std::endl;
+    return ok;
+  }
+
+  // One vertex: a vertex of this TDS, in one of its cells unless it waits
+  // for insert_in_hole.
+  bool is_valid(Vertex_handle v, bool verbose = false, int = 0) const
+  {
+    bool ok = is_vertex(v);
+    if(ok && !(v.index() != ghost_vertex && is_created(v.index()))) {
+      const Tet_id t = some_cell_of(v.index());
+      ok = t < mesh().number_of_slots() && mesh().is_live(t) && slot_of(t, v.index(), std::max(dimension(), 0)) >= 0;
+    }
+    if(!ok && verbose) std::cerr << "Fast_Delaunay_triangulation_3::tds().is_valid(v): not a vertex in its cell\n";
+    return ok;
+  }
+  // One cell: live, and its neighbours point back at it across the same face.
+  bool is_valid(Cell_handle c, bool verbose = false, int = 0) const
+  {
+    bool ok = live_slot(c);
+    for(int i = 0; ok && i <= dimension(); ++i) {
+      const Facet_code code = mesh().neighbor_code(c.index(), i);
+      ok = tet_of(code) < mesh().number_of_slots() && mesh().is_live(tet_of(code)) &&
+           mesh().neighbor_code(code) == facet_code(c.index(), i);
+    }
+    if(!ok && verbose) std::cerr << "Fast_Delaunay_triangulation_3::tds().is_valid(c): not a live cell with its neighbours\n";
     return ok;
   }
 
