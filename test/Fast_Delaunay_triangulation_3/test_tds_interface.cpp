@@ -11,6 +11,7 @@
 #include <CGAL/Triangulation_simplex_3.h>
 
 #include <algorithm>
+#include <array>
 #include <iterator>
 #include <stdexcept>
 #include <type_traits>
@@ -175,6 +176,29 @@ TYPED_TEST(Tds_interface, AdjacencyAndMembershipAreCgalTds)
     EXPECT_EQ(sf.dimension(), 2);
     EXPECT_EQ(sc.dimension(), 3);
   }
+}
+
+// The segment simplex traverser read as CGAL's examples read it, into
+// Triangulation_simplex_3<DT::Triangulation_data_structure>: random points,
+// so the faces crossed are the same on both; counted by dimension.
+template <class Tr>
+std::array<int, 4> simplices_crossed(const Tr& tr, const Point& p, const Point& q)
+{
+  typedef CGAL::Triangulation_simplex_3<typename Tr::Triangulation_data_structure> Simplex;
+  std::array<int, 4> count = {0, 0, 0, 0};
+  for(const Simplex s : tr.segment_traverser_simplices(p, q)) ++count[s.dimension()];
+  return count;
+}
+TYPED_TEST(Tds_interface, SegmentSimplicesAsTriangulationSimplex3)
+{
+  const std::vector<Point> points = to_points<Point>(uniform_points(200, 91));
+  TypeParam tr(points.begin(), points.end());
+  Cgal_dt cgal(points.begin(), points.end());
+  const Point p(0.1, 0.2, 0.3), q(0.8, 0.7, 0.75);
+  const std::array<int, 4> mine = simplices_crossed(tr, p, q), theirs = simplices_crossed(cgal, p, q);
+  EXPECT_TRUE(mine == theirs) << mine[0] << " " << mine[1] << " " << mine[2] << " " << mine[3] << " vs " << theirs[0]
+                              << " " << theirs[1] << " " << theirs[2] << " " << theirs[3];
+  EXPECT_GT(theirs[3], 3);
 }
 
 // CGAL's test suite pattern: a vertex from tds().create_vertex() placed by
