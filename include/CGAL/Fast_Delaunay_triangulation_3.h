@@ -176,6 +176,28 @@ public:
   typedef typename std::conditional<has_user_vertex_base, Vertex, void>::type User_vertex_record;
   typedef typename std::conditional<has_user_cell_base, Cell, void>::type User_cell_record;
 
+  // CGAL's combinatorial layer: a view over the same arrays (Flat_tds.h)
+  // with the Triangulation_data_structure_3 interface and these handles and
+  // iterators (tds().raw_cells_begin() assigns to a Cell_iterator).
+  struct Tds_types
+  {
+    typedef typename Self::Vertex_handle Vertex_handle;
+    typedef typename Self::Cell_handle Cell_handle;
+    typedef typename Self::Vertex Vertex;
+    typedef typename Self::Cell Cell;
+    typedef typename Self::Facet Facet;
+    typedef typename Self::Edge Edge;
+    typedef typename Self::All_cells_iterator Cell_iterator;
+    typedef typename Self::All_vertices_iterator Vertex_iterator;
+    typedef typename Self::All_facets_iterator Facet_iterator;
+    typedef typename Self::All_edges_iterator Edge_iterator;
+    typedef typename Self::Cell_circulator Cell_circulator;
+    typedef typename Self::Facet_circulator Facet_circulator;
+    typedef typename Self::Concurrency_tag Concurrency_tag;
+  };
+  typedef Fast_Delaunay_triangulation_3_internal::Flat_tds<Anchor, Tds_types> Triangulation_data_structure;
+  typedef Triangulation_data_structure Tds;
+
   enum Locate_type { VERTEX = 0, EDGE, FACET, CELL, OUTSIDE_CONVEX_HULL, OUTSIDE_AFFINE_HULL };
 
 private:
@@ -671,6 +693,37 @@ public:
     return Vertex_handle(anchor_.get(), v);
   }
 
+  // CGAL 5.5's overload that places newv, a vertex of tds().create_vertex()
+  // not yet in a cell, at p (the same cells as the overload above).  Any
+  // other vertex throws std::invalid_argument, nothing changed.
+  template <class CellIt>
+  Vertex_handle insert_in_hole(const Point& p, CellIt cells_begin, CellIt cells_end, Cell_handle begin, int i,
+                               Vertex_handle newv)
+  {
+    CGAL_precondition(dimension() >= 2);
+    CGAL_precondition(begin != Cell_handle() && i >= 0 && i <= dimension());
+    if(newv.owner() != anchor_.get() || newv.index() == Fast_Delaunay_triangulation_3_internal::ghost_vertex ||
+       !anchor_->tds.is_created(newv.index()))
+      throw std::invalid_argument("Fast_Delaunay_triangulation_3::insert_in_hole: the vertex is not one of "
+                                  "tds().create_vertex() waiting for a cell");
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    Core::check_finite(xyz, 1);
+    std::vector<Tet_id> hole, ball;
+    for(; cells_begin != cells_end; ++cells_begin) {
+      const Cell_handle c = *cells_begin;
+      hole.push_back(c.index());
+    }
+    anchor_->tds.placed(newv.index());
+    if(dimension() == 2) {
+      anchor_->core.insert_in_hole_below_dimension_3(xyz, hole, begin.index(), i, ball, newv.index());
+      vertices_added();
+      return newv;
+    }
+    anchor_->core.insert_in_hole(xyz, hole.data(), hole.size(), ball, newv.index());
+    after_single_insertion(ball);
+    return newv;
+  }
+
   // ---------------------------------------------------------------- removal and moves
   // CGAL's remove(v): the cells of v go, the hole is re-triangulated by the
   // Delaunay triangulation of the remaining points (the same as CGAL's:
@@ -877,6 +930,10 @@ public:
 
   // ---------------------------------------------------------------- access
   const Geom_traits& geom_traits() const { return anchor_->traits; }
+  // The combinatorial layer (Flat_tds.h); it goes with the data through
+  // swap() and moves, as the handles do.
+  Tds& tds() { return anchor_->tds; }
+  const Tds& tds() const { return anchor_->tds; }
   int dimension() const { return anchor_->core.dimension; }
   size_type number_of_vertices() const { return anchor_->core.number_of_vertices(); }
   // Cells, finite and infinite; 0 in dimension < 3, as in CGAL (the triangles
@@ -1537,6 +1594,7 @@ public:
     }
     anchor_->core.assign(std::move(built), built_dimension);
     anchor_->incident_cells.clear();
+    anchor_->tds.forget_created(); // their records are gone with the old arrays
     // The file carries no infos: every vertex and cell starts with Info().
     anchor_->vertex_infos.clear();
     anchor_->user_vertices.clear();

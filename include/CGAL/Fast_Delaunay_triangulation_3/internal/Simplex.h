@@ -12,6 +12,7 @@
 #ifndef CGAL_FDT3_INTERNAL_SIMPLEX_H
 #define CGAL_FDT3_INTERNAL_SIMPLEX_H
 
+#include <CGAL/Triangulation_simplex_3.h>
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -72,6 +73,19 @@ public:
   {
     CGAL_precondition(dimension_ == 3);
     return cell_;
+  }
+
+  // CGAL's own simplex over tds(), the type CGAL's examples name
+  // (Triangulation_simplex_3<DT::Triangulation_data_structure>): the same face.
+  operator CGAL::Triangulation_simplex_3<typename Tr::Triangulation_data_structure>() const
+  {
+    typedef CGAL::Triangulation_simplex_3<typename Tr::Triangulation_data_structure> Cgal_simplex;
+    switch(dimension_) {
+      case 0: return Cgal_simplex(vertex_);
+      case 1: return Cgal_simplex(Edge(cell_, i_, j_));
+      case 2: return Cgal_simplex(Facet(cell_, i_));
+      default: return cell_ == Cell_handle() ? Cgal_simplex() : Cgal_simplex(cell_);
+    }
   }
 
   // A cell that has the simplex.

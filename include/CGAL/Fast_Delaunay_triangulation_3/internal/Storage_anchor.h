@@ -17,6 +17,7 @@
 #define CGAL_FDT3_INTERNAL_STORAGE_ANCHOR_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_tds.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/User_bases.h>
@@ -41,13 +42,14 @@ public:
   typedef typename Tr::Vertex Vertex;
   typedef typename Tr::Cell Cell;
 
-  explicit Storage_anchor(const Geom_traits& gt) : traits(gt) {}
+  explicit Storage_anchor(const Geom_traits& gt) : traits(gt), tds(this) {}
   // User vertex records know the anchor they belong to: a copy's records
   // must name the copy.
   Storage_anchor(const Storage_anchor& other)
       : traits(other.traits), core(other.core), incident_cells(other.incident_cells),
         vertex_infos(other.vertex_infos), cell_infos(other.cell_infos), user_vertices(other.user_vertices),
-        user_cells(other.user_cells), dimension_seen_(other.dimension_seen_), vertices_seen_(other.vertices_seen_)
+        user_cells(other.user_cells), tds(this, other.tds), dimension_seen_(other.dimension_seen_),
+        vertices_seen_(other.vertices_seen_)
   {
     user_vertices.attach(this);
   }
@@ -61,6 +63,7 @@ public:
     cell_infos.clear();
     user_vertices.clear();
     user_cells.clear();
+    tds.forget_created();
     dimension_seen_ = -1;
     vertices_seen_ = 0;
   }
@@ -73,6 +76,7 @@ public:
   Cell_infos<Cell_info> cell_infos;
   User_vertices<typename Tr::User_vertex_record> user_vertices;
   User_cells<typename Tr::User_cell_record> user_cells;
+  Flat_tds<Storage_anchor, typename Tr::Tds_types> tds; // what the triangulation's tds() returns
 
   // After an insertion: new vertices get Info() and a default user vertex
   // base; cells CGAL changed in place below dimension 3 keep theirs, and so

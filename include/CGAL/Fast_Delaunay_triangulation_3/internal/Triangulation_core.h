@@ -236,11 +236,13 @@ public:
   // Dimension 2, CGAL's insert_in_hole: the triangles hole[0..n), star-shaped
   // from p (p is no vertex), replaced by the new vertex joined to the hole's
   // boundary edges; (begin, i) is one of them.
+  // `given`: a record of create_unplaced_vertex() to place at p instead of
+  // a new one (CGAL's insert_in_hole with newv).
   Vertex_id insert_in_hole_below_dimension_3(const double* p, const std::vector<Tet_id>& hole, Tet_id begin, int i,
-                                             std::vector<Tet_id>& around)
+                                             std::vector<Tet_id>& around, Vertex_id given = ghost_vertex)
   {
     CGAL_precondition(dimension == 2);
-    const Vertex_id v = append_vertex(p);
+    const Vertex_id v = given == ghost_vertex ? append_vertex(p) : place_unplaced_vertex(given, p);
     lower.insert_in_hole(mesh, v, hole, begin, i, &around);
     last_report = Insertion_report();
     last_report.points = 1;
@@ -276,10 +278,11 @@ public:
   // Dimension 3, CGAL's insert_in_hole: the distinct tetrahedra hole[0..n),
   // star-shaped from p (p is no vertex), are replaced by the new vertex of p
   // joined to their boundary facets, listed in `ball`.
-  Vertex_id insert_in_hole(const double* p, const Tet_id* hole, std::size_t n, std::vector<Tet_id>& ball)
+  Vertex_id insert_in_hole(const double* p, const Tet_id* hole, std::size_t n, std::vector<Tet_id>& ball,
+                           Vertex_id given = ghost_vertex)
   {
     CGAL_precondition(dimension == 3 && n > 0);
-    const Vertex_id v = append_vertex(p);
+    const Vertex_id v = given == ghost_vertex ? append_vertex(p) : place_unplaced_vertex(given, p);
     Insertion_scratch scratch;
     Delaunay_kernel<> kernel = sequential_kernel(scratch);
     const bool filled = kernel.fill_hole(v, hole, n);
@@ -288,6 +291,23 @@ public:
     ball.assign(scratch.ball.begin(), scratch.ball.end());
     hint_ = ball.front();
     finish_single_insertion(scratch);
+    return v;
+  }
+
+  // CGAL's tds().create_vertex(): a record in no cell, dead (neither
+  // counted nor iterated) until insert_in_hole places it.  Its coordinates
+  // stay finite for the passes that read every record and are not in the
+  // filters' bounding box.
+  Vertex_id create_unplaced_vertex()
+  {
+    if(vertex_slots() + 1 > max_vertices)
+      throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^31 - 2 vertices");
+    const Vertex_id v = static_cast<Vertex_id>(vertex_slots());
+    Vertex_record r;
+    r.xyz[0] = r.xyz[1] = r.xyz[2] = 0;
+    r.scratch = 0;
+    mesh.vertices.push_back(r);
+    mesh.kill_vertex(v);
     return v;
   }
 
@@ -408,6 +428,12 @@ private:
     r.scratch = 0;
     mesh.vertices.push_back(r);
     extend_bounding_box(v);
+    return v;
+  }
+  Vertex_id place_unplaced_vertex(Vertex_id v, const double* p)
+  {
+    mesh.revive_vertex(v, p);
+    extend_bounding_box_with(v);
     return v;
   }
   Delaunay_kernel<> sequential_kernel(Insertion_scratch& scratch)
