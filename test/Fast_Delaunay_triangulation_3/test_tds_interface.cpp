@@ -19,7 +19,7 @@
 
 using namespace fdt3_test;
 
-namespace {
+namespace test_tds_interface {
 
 typedef CGAL::Fast_Delaunay_triangulation_3<K> Fast_dt;
 #if defined(NDEBUG) || defined(CGAL_NDEBUG) || defined(CGAL_NO_ASSERTIONS) || \
@@ -506,4 +506,4 @@ TEST(Tds_view, CreatedVertexIsInvisibleUntilPlaced)
   EXPECT_TRUE(copy.tds().is_valid());
 }
 
-} // namespace
+} // namespace test_tds_interface
