@@ -17,6 +17,7 @@
 #define CGAL_FDT3_INTERNAL_STORAGE_ANCHOR_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_points.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/User_bases.h>
@@ -24,6 +25,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -41,12 +43,16 @@ public:
   typedef typename Tr::Vertex Vertex;
   typedef typename Tr::Cell Cell;
 
+  // The kernel's points are kept per vertex when its FT is not double
+  // (Kernel_points.h); otherwise they are the vertex records.
+  static constexpr bool keeps_kernel_points = !std::is_same<typename Geom_traits::FT, double>::value;
+
   explicit Storage_anchor(const Geom_traits& gt) : traits(gt) {}
   // User vertex records know the anchor they belong to: a copy's records
   // must name the copy.
   Storage_anchor(const Storage_anchor& other)
       : traits(other.traits), core(other.core), incident_cells(other.incident_cells),
-        vertex_infos(other.vertex_infos), cell_infos(other.cell_infos), user_vertices(other.user_vertices),
+        kernel_points(other.kernel_points), vertex_infos(other.vertex_infos), cell_infos(other.cell_infos), user_vertices(other.user_vertices),
         user_cells(other.user_cells), dimension_seen_(other.dimension_seen_), vertices_seen_(other.vertices_seen_)
   {
     user_vertices.attach(this);
@@ -57,6 +63,7 @@ public:
   {
     core.clear();
     incident_cells.clear();
+    kernel_points.clear();
     vertex_infos.clear();
     cell_infos.clear();
     user_vertices.clear();
@@ -68,6 +75,7 @@ public:
   Geom_traits traits;
   Triangulation_core core;
   mutable std::vector<Tet_id> incident_cells; // lazily built v->cell() cache (dimension 3)
+  Kernel_points<Point, keeps_kernel_points> kernel_points;
   Vertex_infos<Vertex_info> vertex_infos;
   Cell_infos<Cell_info> cell_infos;
   User_vertices<typename Tr::User_vertex_record> user_vertices;
@@ -81,6 +89,7 @@ public:
   void vertices_added()
   {
     const std::size_t n = core.number_of_vertices();
+    kernel_points.resize(core.mesh);
     vertex_infos.resize(n);
     user_vertices.resize(this, n);
     if(core.lower.active()) {
@@ -102,6 +111,7 @@ public:
   int dimension() const { return core.dimension; }
   Point point_of(Vertex_id v) const
   {
+    if constexpr(keeps_kernel_points) return kernel_points.at(v);
     if(v == ghost_vertex) return Point(0, 0, 0);
     const double* p = core.mesh.point(v);
     return Point(p[0], p[1], p[2]);

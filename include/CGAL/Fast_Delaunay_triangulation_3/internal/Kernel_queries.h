@@ -1,0 +1,169 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Dimension-3 queries at a point whose coordinates are not doubles (a
+// construction of a kernel with exact constructions, such as EPEC): the
+// engine's predicates read doubles, so these run the same steps as
+// Point_location.h (visibility walk, classification in the cell found,
+// in-sphere with CGAL's symbolic perturbation) with the kernel's own exact
+// predicates on the vertices' kernel points.  Only queries take this path;
+// every vertex has double coordinates (Kernel_points.h), so a query point
+// that is no double is never equal to a vertex.
+
+#ifndef CGAL_FDT3_INTERNAL_KERNEL_QUERIES_H
+#define CGAL_FDT3_INTERNAL_KERNEL_QUERIES_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
+
+#include <CGAL/enum.h>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// Anchor: the Storage_anchor (traits, mesh and point_of).
+template <class Anchor>
+class Kernel_queries
+{
+public:
+  typedef typename Anchor::Geom_traits Gt;
+  typedef typename Gt::Point_3 Point;
+
+  explicit Kernel_queries(const Anchor& a) : a_(a), m_(a.core.mesh) {}
+
+  // The orientation of t with p in place of vertex i (i = 3 in a ghost
+  // cell: p against its hull facet), CGAL's sign.
+  int orientation_with(Tet_id t, int i, const Point& p) const
+  {
+    Point q[4] = {point(t, 0), point(t, 1), point(t, 2), i == 3 ? p : point(t, 3)};
+    q[i] = p;
+    return static_cast<int>(a_.traits.orientation_3_object()(q[0], q[1], q[2], q[3]));
+  }
+
+  // The visibility walk of Point_location.h: leave a finite cell through a
+  // facet that p is strictly beyond, until none is (p in the closure of the
+  // cell) or the cell entered is a ghost (p strictly beyond that hull
+  // facet).  The facet tried first rotates pseudo-randomly so that the walk
+  // cannot cycle in a degenerate triangulation.
+  Location locate(Tet_id start, const Point& p) const
+  {
+    Tet_id t = start < m_.number_of_slots() && m_.is_live(start) ? start : m_.first_live_tet();
+    if(m_.is_ghost(t)) t = m_.neighbor(t, 3);
+    std::uint32_t state = 2463534242u;
+    for(;;) {
+      state ^= state << 13;
+      state ^= state >> 17;
+      state ^= state << 5;
+      const int first = static_cast<int>(state & 3);
+      int o[4];
+      int exit = -1;
+      for(int k = 0; k < 4 && exit < 0; ++k) {
+        const int i = (first + k) & 3;
+        o[i] = orientation_with(t, i, p);
+        if(o[i] < 0) exit = i;
+      }
+      if(exit < 0) return location_from_orientations(t, o);
+      t = m_.neighbor(t, exit);
+      if(m_.is_ghost(t)) {
+        Location loc;
+        loc.cell = t;
+        loc.type = Location_type::outside_convex_hull;
+        loc.li = 3;
+        return loc;
+      }
+    }
+  }
+
+  Bounded_side side_of_cell(Tet_id t, const Point& p, Location_type& lt, int& i, int& j) const
+  {
+    return Fast_Delaunay_triangulation_3_internal::side_of_cell(
+        a_.traits, m_, t, p, [&](int k) { return orientation_with(t, k, p); },
+        [this](Vertex_id v) { return a_.point_of(v); }, lt, i, j);
+  }
+
+  // As side_of_sphere of Point_location.h: +1 inside; a ghost cell's
+  // inside is the open half-space beyond its hull facet, then the facet's
+  // circumcircle within its plane.
+  int side_of_sphere(Tet_id t, const Point& p, bool perturb) const
+  {
+    const Point w0 = point(t, 0), w1 = point(t, 1), w2 = point(t, 2);
+    if(!m_.is_ghost(t)) {
+      const Point w3 = point(t, 3);
+      const int side = static_cast<int>(a_.traits.side_of_oriented_sphere_3_object()(w0, w1, w2, w3, p));
+      if(side != 0 || !perturb) return side;
+      return perturbed_tie_break(w0, w1, w2, w3, p);
+    }
+    const int o = orientation_with(t, 3, p);
+    if(o != 0) return o;
+    return coplanar_side_of_bounded_circle(w0, w1, w2, p, perturb);
+  }
+
+  // CGAL's coplanar_side_of_bounded_circle(p0, p1, p2, p, perturb) for
+  // coplanar points, p0, p1, p2 not collinear: +1 inside.
+  int coplanar_side_of_bounded_circle(const Point& p0, const Point& p1, const Point& p2, const Point& p,
+                                      bool perturb) const
+  {
+    const int side = static_cast<int>(a_.traits.coplanar_side_of_bounded_circle_3_object()(p0, p1, p2, p));
+    if(side != 0 || !perturb) return side;
+    // The perturbation of Predicates.h: the largest point in the
+    // lexicographic order whose coefficient is not zero decides.
+    const auto orientation = a_.traits.coplanar_orientation_3_object();
+    const Point* points[4] = {&p0, &p1, &p2, &p};
+    std::sort(points, points + 4, [this](const Point* x, const Point* y) { return smaller(*x, *y); });
+    const int local = static_cast<int>(orientation(p0, p1, p2));
+    for(int i = 3; i > 0; --i) {
+      if(points[i] == &p) return -1;
+      int o = 0;
+      if(points[i] == &p2 && (o = static_cast<int>(orientation(p0, p1, p))) != 0) return o * local;
+      if(points[i] == &p1 && (o = static_cast<int>(orientation(p0, p, p2))) != 0) return o * local;
+      if(points[i] == &p0 && (o = static_cast<int>(orientation(p, p1, p2))) != 0) return o * local;
+    }
+    return -local;
+  }
+
+private:
+  const Anchor& a_;
+  const Flat_storage& m_;
+
+  Point point(Tet_id t, int i) const { return a_.point_of(m_.vertex(t, i)); }
+  bool smaller(const Point& x, const Point& y) const
+  {
+    return a_.traits.compare_xyz_3_object()(x, y) == SMALLER;
+  }
+
+  // perturbed_tie_break of Predicates.h with the kernel's predicates: the
+  // two lexicographically largest of the five points decide.
+  int perturbed_tie_break(const Point& p0, const Point& p1, const Point& p2, const Point& p3, const Point& p) const
+  {
+    const auto orientation = a_.traits.orientation_3_object();
+    const Point* const points[5] = {&p0, &p1, &p2, &p3, &p};
+    const Point* largest = points[0];
+    const Point* second = nullptr;
+    for(int i = 1; i < 5; ++i) {
+      if(smaller(*largest, *points[i])) {
+        second = largest;
+        largest = points[i];
+      } else if(second == nullptr || smaller(*second, *points[i])) {
+        second = points[i];
+      }
+    }
+    for(const Point* top : {largest, second}) {
+      if(top == &p) return -1;
+      int o = 0;
+      if(top == &p3 && (o = static_cast<int>(orientation(p0, p1, p2, p))) != 0) return o;
+      if(top == &p2 && (o = static_cast<int>(orientation(p0, p1, p, p3))) != 0) return o;
+      if(top == &p1 && (o = static_cast<int>(orientation(p0, p, p2, p3))) != 0) return o;
+      if(top == &p0 && (o = static_cast<int>(orientation(p, p1, p2, p3))) != 0) return o;
+    }
+    CGAL_assertion_msg(false, "perturbation did not decide: duplicate points?");
+    return -1;
+  }
+};
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_KERNEL_QUERIES_H

@@ -1,0 +1,325 @@
+// Any CGAL kernel: one test body instantiated for EPEC, EPEC with
+// Fast_location, Simple_cartesian<double> and EPICK, each against
+// CGAL::Delaunay_triangulation_3 of the same kernel (and location policy) on
+// the same points.  Points with double coordinates go through the double
+// engine; the kernel's own objects come back from v->point(); queries at
+// points an exact construction made (not doubles) are answered exactly;
+// an input point whose coordinates are not doubles is refused.
+
+#include "point_sets.h"
+
+#include <CGAL/Fast_Delaunay_triangulation_3.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/convert_to_cgal.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+namespace {
+
+using fdt3_test::Xyz;
+
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epec;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Simple_cartesian<double> Cartesian;
+
+template <class K, class... Policy>
+struct Config
+{
+  typedef K Kernel;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Policy...> Fast;
+  typedef CGAL::Delaunay_triangulation_3<K, Policy...> Cgal;
+  static constexpr bool exact_constructions = !std::is_same<typename K::FT, double>::value;
+};
+
+typedef ::testing::Types<Config<Epec>, Config<Epec, CGAL::Fast_location>, Config<Cartesian>, Config<Epick>>
+    Configs;
+
+// The coordinates of a point that has double coordinates, compared as
+// doubles: only used for points that are doubles exactly (checked by
+// PointsAreTheObjectsInserted).
+typedef std::tuple<double, double, double> Key;
+template <class Point>
+Key key(const Point& p)
+{
+  return Key(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+typedef std::array<Key, 4> Cell_key;
+template <class Tr>
+Cell_key cell_key(typename Tr::Cell_handle c)
+{
+  Cell_key k;
+  for(int i = 0; i < 4; ++i) k[i] = key(c->vertex(i)->point());
+  std::sort(k.begin(), k.end());
+  return k;
+}
+template <class Tr>
+std::vector<Cell_key> finite_cells(const Tr& tr)
+{
+  std::vector<Cell_key> keys;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) keys.push_back(cell_key<Tr>(c));
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+template <class C>
+class Kernels : public ::testing::Test
+{
+public:
+  typedef typename C::Kernel K;
+  typedef typename K::Point_3 Point;
+  typedef typename K::FT FT;
+  typedef typename C::Fast Fast;
+  typedef typename C::Cgal Cgal;
+
+  static std::vector<Point> random_points() { return fdt3_test::to_points<Point>(fdt3_test::uniform_points(300, 11)); }
+  static std::vector<Point> grid() { return fdt3_test::to_points<Point>(fdt3_test::grid_points(125, 12)); }
+
+  // Query points: doubles, and with an exact kernel points made by
+  // constructions (not doubles): inside cells, on facets and edges (exact
+  // barycentres), outside the hull.
+  static std::vector<Point> queries(const Cgal& cgal)
+  {
+    std::vector<Point> q = fdt3_test::to_points<Point>(fdt3_test::uniform_points(40, 13));
+    for(const Xyz& x : fdt3_test::uniform_points(5, 14)) q.emplace_back(3 * x.x - 1, x.y, x.z);
+    if constexpr(C::exact_constructions) {
+      int k = 0;
+      for(auto c = cgal.finite_cells_begin(); c != cgal.finite_cells_end() && k < 30; ++c, ++k) {
+        const Point a = c->vertex(0)->point(), b = c->vertex(1)->point(), d = c->vertex(2)->point(),
+                    e = c->vertex(3)->point();
+        q.push_back(CGAL::barycenter(a, 1, b, 2, d, 3, e, 5)); // inside
+        q.push_back(CGAL::barycenter(a, 1, b, 1, d, 1));       // on a facet
+        q.push_back(CGAL::barycenter(a, 1, b, 2));             // on an edge
+        q.push_back(CGAL::barycenter(a, -1, b, 2, d, 2));      // often outside the cell, maybe the hull
+        q.push_back(Point(a.x() * 3 - FT(1) / 3, a.y(), a.z())); // beyond the hull for some
+      }
+    }
+    return q;
+  }
+};
+
+TYPED_TEST_SUITE(Kernels, Configs);
+
+TYPED_TEST(Kernels, SameCellsAsCgal)
+{
+  typedef typename TestFixture::Fast Fast;
+  typedef typename TestFixture::Cgal Cgal;
+  for(const auto& points : {TestFixture::random_points(), TestFixture::grid()}) {
+    const Fast ours(points.begin(), points.end());
+    const Cgal cgal(points.begin(), points.end());
+    EXPECT_TRUE(ours.is_valid());
+    EXPECT_TRUE(cgal.is_valid());
+    EXPECT_EQ(ours.number_of_vertices(), cgal.number_of_vertices());
+    EXPECT_EQ(ours.number_of_finite_cells(), cgal.number_of_finite_cells());
+    EXPECT_EQ(finite_cells(ours), finite_cells(cgal));
+  }
+}
+
+TYPED_TEST(Kernels, PointsAreTheObjectsInserted)
+{
+  typedef typename TestFixture::Point Point;
+  typedef typename TestFixture::Fast Fast;
+  const std::vector<Point> points = TestFixture::random_points();
+  Fast ours(points.begin(), points.begin() + 200);
+  // One at a time, with a duplicate, and a second range.
+  ours.insert(points[200]);
+  ours.insert(points[0]);
+  ours.insert(points.begin() + 201, points.end());
+  ASSERT_EQ(ours.number_of_vertices(), points.size());
+  for(const Point& p : points) {
+    typename Fast::Vertex_handle v;
+    ASSERT_TRUE(ours.is_vertex(p, v));
+    EXPECT_TRUE(v->point() == p);
+  }
+  if constexpr(TypeParam::exact_constructions) {
+    // A point an exact construction made, whose value is a double exactly,
+    // is accepted (its interval need not be a single double).
+    typedef typename TestFixture::FT FT;
+    const Point p(FT(1) / 3 * 3 + FT(7), FT(2) / 7 * 7, FT(-1) / 5 * 10);
+    const typename Fast::Vertex_handle v = ours.insert(p);
+    EXPECT_TRUE(v->point() == p);
+    EXPECT_TRUE(v->point() == Point(8, 2, -2));
+    EXPECT_TRUE(ours.is_valid());
+  }
+}
+
+TYPED_TEST(Kernels, LocateAndNearestVertexAsCgal)
+{
+  typedef typename TestFixture::Point Point;
+  typedef typename TestFixture::Fast Fast;
+  typedef typename TestFixture::Cgal Cgal;
+  const std::vector<Point> points = TestFixture::random_points();
+  const Fast ours(points.begin(), points.end());
+  const Cgal cgal(points.begin(), points.end());
+  // Per location type, how many query points that are no doubles met it.
+  std::map<int, std::size_t> not_doubles;
+  for(const Point& q : TestFixture::queries(cgal)) {
+    double xyz[3];
+    const bool doubles = CGAL::Fast_Delaunay_triangulation_3_internal::exact_coordinates(q, xyz);
+    typename Fast::Locate_type lt;
+    typename Cgal::Locate_type clt;
+    int li = -1, lj = -1, cli = -1, clj = -1;
+    const typename Fast::Cell_handle c = ours.locate(q, lt, li, lj);
+    const typename Cgal::Cell_handle cc = cgal.locate(q, clt, cli, clj);
+    ASSERT_EQ(static_cast<int>(lt), static_cast<int>(clt));
+    if(!doubles) ++not_doubles[static_cast<int>(lt)];
+    if(lt == Fast::CELL) EXPECT_EQ(cell_key<Fast>(c), cell_key<Cgal>(cc));
+    if(lt == Fast::FACET) {
+      std::vector<Key> a, b;
+      for(int k = 0; k < 4; ++k) {
+        if(k != li) a.push_back(key(c->vertex(k)->point()));
+        if(k != cli) b.push_back(key(cc->vertex(k)->point()));
+      }
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      EXPECT_EQ(a, b);
+    }
+    if(lt == Fast::EDGE) {
+      std::array<Key, 2> a = {key(c->vertex(li)->point()), key(c->vertex(lj)->point())},
+                         b = {key(cc->vertex(cli)->point()), key(cc->vertex(clj)->point())};
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      EXPECT_EQ(a, b);
+    }
+    if(lt == Fast::OUTSIDE_CONVEX_HULL) EXPECT_TRUE(ours.is_infinite(c));
+    EXPECT_TRUE(ours.nearest_vertex(q)->point() == cgal.nearest_vertex(q)->point());
+    // side_of_cell of the cell found, and the in-sphere test of CGAL's cell.
+    int si = -1, sj = -1;
+    EXPECT_NE(ours.side_of_cell(q, c, lt, si, sj), CGAL::ON_UNBOUNDED_SIDE);
+    if(clt == Cgal::CELL && !cgal.is_infinite(cc))
+      EXPECT_EQ(ours.side_of_sphere(c, q, true), cgal.side_of_sphere(cc, q, true));
+  }
+  if constexpr(TypeParam::exact_constructions) {
+    EXPECT_GE(not_doubles[Fast::CELL], 30u);
+    EXPECT_GE(not_doubles[Fast::FACET], 20u);
+    EXPECT_GE(not_doubles[Fast::EDGE], 20u);
+    EXPECT_GE(not_doubles[Fast::OUTSIDE_CONVEX_HULL], 3u);
+  }
+}
+
+TYPED_TEST(Kernels, DualIsCgalCircumcenter)
+{
+  typedef typename TestFixture::Point Point;
+  typedef typename TestFixture::Fast Fast;
+  typedef typename TestFixture::Cgal Cgal;
+  const std::vector<Point> points = TestFixture::random_points();
+  const Fast ours(points.begin(), points.end());
+  const Cgal cgal(points.begin(), points.end());
+  std::map<Cell_key, typename Cgal::Cell_handle> cgal_cell;
+  for(auto c = cgal.finite_cells_begin(); c != cgal.finite_cells_end(); ++c) cgal_cell[cell_key<Cgal>(c)] = c;
+  for(auto c = ours.finite_cells_begin(); c != ours.finite_cells_end(); ++c) {
+    const typename Cgal::Cell_handle cc = cgal_cell.at(cell_key<Fast>(c));
+    const Point center = ours.dual(c);
+    if constexpr(TypeParam::exact_constructions) {
+      EXPECT_TRUE(center == cgal.dual(cc));
+      // The centre is no double in general: the exact queries decide.
+      EXPECT_EQ(ours.side_of_sphere(c, center), CGAL::ON_BOUNDED_SIDE);
+      EXPECT_TRUE(ours.tetrahedron(c) == cgal.tetrahedron(cc) ||
+                  ours.tetrahedron(c).has_on_boundary(center) == cgal.tetrahedron(cc).has_on_boundary(center));
+    } else {
+      EXPECT_LT(CGAL::squared_distance(center, cgal.dual(cc)), 1e-20);
+    }
+  }
+}
+
+TYPED_TEST(Kernels, IoRoundTrip)
+{
+  typedef typename TestFixture::Point Point;
+  typedef typename TestFixture::Fast Fast;
+  typedef typename TestFixture::Cgal Cgal;
+  const std::vector<Point> points = TestFixture::random_points();
+  const Fast ours(points.begin(), points.end());
+  std::stringstream file;
+  file.precision(17);
+  file << ours;
+  Fast back;
+  std::string error;
+  ASSERT_TRUE(back.read(file, &error)) << error;
+  EXPECT_EQ(finite_cells(back), finite_cells(ours));
+  for(auto v = back.finite_vertices_begin(); v != back.finite_vertices_end(); ++v) {
+    typename Fast::Vertex_handle w;
+    ASSERT_TRUE(ours.is_vertex(v->point(), w));
+    EXPECT_TRUE(w->point() == v->point());
+  }
+  // CGAL reads our file, and we read CGAL's.
+  std::stringstream again;
+  again.precision(17);
+  again << ours;
+  Cgal cgal;
+  again >> cgal;
+  ASSERT_TRUE(cgal.is_valid());
+  EXPECT_EQ(cgal.number_of_vertices(), ours.number_of_vertices());
+  const Cgal reference(points.begin(), points.end());
+  std::stringstream cgal_file;
+  cgal_file.precision(17);
+  cgal_file << reference;
+  Fast from_cgal;
+  ASSERT_TRUE(from_cgal.read(cgal_file, &error)) << error;
+  EXPECT_EQ(finite_cells(from_cgal), finite_cells(reference));
+}
+
+TYPED_TEST(Kernels, ConvertToCgalOfTheSameKernel)
+{
+  typedef typename TestFixture::Point Point;
+  typedef typename TestFixture::Fast Fast;
+  typedef typename TestFixture::Cgal Cgal;
+  const std::vector<Point> points = TestFixture::grid();
+  const Fast ours(points.begin(), points.end());
+  Cgal converted;
+  CGAL::convert_to_cgal(ours, converted);
+  EXPECT_TRUE(converted.is_valid());
+  EXPECT_EQ(finite_cells(converted), finite_cells(Cgal(points.begin(), points.end())));
+  for(auto v = converted.finite_vertices_begin(); v != converted.finite_vertices_end(); ++v) {
+    typename Fast::Vertex_handle w;
+    ASSERT_TRUE(ours.is_vertex(v->point(), w));
+    EXPECT_TRUE(w->point() == v->point());
+  }
+}
+
+TYPED_TEST(Kernels, InputNotRepresentableAsDoublesIsRefused)
+{
+  if constexpr(TypeParam::exact_constructions) {
+    typedef typename TestFixture::Point Point;
+    typedef typename TestFixture::FT FT;
+    typedef typename TestFixture::Fast Fast;
+    std::vector<Point> points = TestFixture::random_points();
+    Fast ours(points.begin(), points.end());
+    const std::vector<Cell_key> before = finite_cells(ours);
+    const Point third(FT(1) / 3, FT(0.5), FT(0.5));
+    try {
+      ours.insert(third);
+      FAIL() << "no exception";
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("not representable as doubles"), std::string::npos) << e.what();
+    }
+    std::vector<Point> more = {Point(0.25, 0.25, 0.25), Point(0.75, 0.5, 0.5), third};
+    try {
+      ours.insert(more.begin(), more.end());
+      FAIL() << "no exception";
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("point #2 of the input"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(ours.number_of_vertices(), points.size());
+    EXPECT_EQ(finite_cells(ours), before);
+    EXPECT_TRUE(ours.is_valid());
+    // Below dimension 3 a query point must be a double too.
+    const std::vector<Point> plane = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+    const Fast flat(plane.begin(), plane.end());
+    EXPECT_THROW(flat.locate(third), std::invalid_argument);
+  }
+}
+
+} // namespace
