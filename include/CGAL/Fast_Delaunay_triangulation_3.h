@@ -903,7 +903,10 @@ public:
   Bounded_side side_of_cell(const Point& p, Cell_handle c, Locate_type& lt, int& i, int& j) const
   {
     CGAL_precondition(dimension() == 3);
-    Fast_Delaunay_triangulation_3_internal::Location_type type;
+    // lt has a meaning only on the bounded side or the boundary (CGAL's
+    // words); on the unbounded side it says outside.
+    Fast_Delaunay_triangulation_3_internal::Location_type type =
+        Fast_Delaunay_triangulation_3_internal::Location_type::outside_convex_hull;
     double q[3];
     Bounded_side side;
     if(exact_coordinates(p, q)) {

@@ -176,7 +176,9 @@ TYPED_TEST(Kernels, LocateAndNearestVertexAsCgal)
     const typename Cgal::Cell_handle cc = cgal.locate(q, clt, cli, clj);
     ASSERT_EQ(static_cast<int>(lt), static_cast<int>(clt));
     if(!doubles) ++not_doubles[static_cast<int>(lt)];
-    if(lt == Fast::CELL) EXPECT_EQ(cell_key<Fast>(c), cell_key<Cgal>(cc));
+    if(lt == Fast::CELL) {
+      EXPECT_EQ(cell_key<Fast>(c), cell_key<Cgal>(cc));
+    }
     if(lt == Fast::FACET) {
       std::vector<Key> a, b;
       for(int k = 0; k < 4; ++k) {
@@ -194,13 +196,16 @@ TYPED_TEST(Kernels, LocateAndNearestVertexAsCgal)
       std::sort(b.begin(), b.end());
       EXPECT_EQ(a, b);
     }
-    if(lt == Fast::OUTSIDE_CONVEX_HULL) EXPECT_TRUE(ours.is_infinite(c));
+    if(lt == Fast::OUTSIDE_CONVEX_HULL) {
+      EXPECT_TRUE(ours.is_infinite(c));
+    }
     EXPECT_TRUE(ours.nearest_vertex(q)->point() == cgal.nearest_vertex(q)->point());
     // side_of_cell of the cell found, and the in-sphere test of CGAL's cell.
     int si = -1, sj = -1;
     EXPECT_NE(ours.side_of_cell(q, c, lt, si, sj), CGAL::ON_UNBOUNDED_SIDE);
-    if(clt == Cgal::CELL && !cgal.is_infinite(cc))
+    if(clt == Cgal::CELL && !cgal.is_infinite(cc)) {
       EXPECT_EQ(ours.side_of_sphere(c, q, true), cgal.side_of_sphere(cc, q, true));
+    }
   }
   if constexpr(TypeParam::exact_constructions) {
     EXPECT_GE(not_doubles[Fast::CELL], 30u);
@@ -233,6 +238,37 @@ TYPED_TEST(Kernels, DualIsCgalCircumcenter)
       EXPECT_LT(CGAL::squared_distance(center, cgal.dual(cc)), 1e-20);
     }
   }
+}
+
+// Between barycentres of two far cells (no doubles with an exact kernel,
+// and in general position): CGAL's cells, in CGAL's order.
+TYPED_TEST(Kernels, SegmentTraverserAsCgal)
+{
+  typedef typename TestFixture::Point Point;
+  typedef typename TestFixture::Fast Fast;
+  typedef typename TestFixture::Cgal Cgal;
+  const std::vector<Point> points = TestFixture::random_points();
+  const Fast ours(points.begin(), points.end());
+  const Cgal cgal(points.begin(), points.end());
+  std::vector<typename Cgal::Cell_handle> cells;
+  for(auto c = cgal.finite_cells_begin(); c != cgal.finite_cells_end(); ++c) cells.push_back(c);
+  auto inside = [](typename Cgal::Cell_handle c) {
+    return CGAL::barycenter(c->vertex(0)->point(), 1, c->vertex(1)->point(), 2, c->vertex(2)->point(), 3,
+                            c->vertex(3)->point(), 4);
+  };
+  std::size_t compared = 0;
+  for(std::size_t k = 0; k + 1 < cells.size() && k < 100; k += 10) {
+    const Point p = inside(cells[k]), q = inside(cells[cells.size() - 1 - k]);
+    std::vector<Cell_key> a, b;
+    for(auto c = ours.segment_traverser_cells_begin(p, q); c != ours.segment_traverser_cells_end(); ++c)
+      a.push_back(ours.is_infinite(c) ? Cell_key() : cell_key<Fast>(c));
+    for(auto c = cgal.segment_traverser_cells_begin(p, q); c != cgal.segment_traverser_cells_end(); ++c)
+      b.push_back(cgal.is_infinite(c) ? Cell_key() : cell_key<Cgal>(c));
+    EXPECT_EQ(a, b);
+    EXPECT_GE(a.size(), 2u);
+    ++compared;
+  }
+  EXPECT_GE(compared, 5u);
 }
 
 TYPED_TEST(Kernels, IoRoundTrip)
