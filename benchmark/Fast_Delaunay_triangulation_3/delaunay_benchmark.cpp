@@ -7,12 +7,14 @@
 // them, equally for every engine, and each table states that baseline. Engines are interleaved round by round
 // (round r: fast, cgal, cgal-par, ...) so that a drift of the machine hits them alike; the table shows medians.
 //
-// Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all] [--engines fast,cgal,cgal-par,fast-par]
+// Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all]
+//                           [--engines fast,cgal,cgal-par,fast-par,fast-epec,cgal-epec]
 //                           [--rounds 3] [--threads 2[,1...]] [--phases] [--verbose] [--csv]
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/version.h>
 #ifdef CGAL_LINKED_WITH_TBB
@@ -115,8 +117,8 @@ double seconds_since(Clock::time_point start)
 }
 
 // Times only the insertion; counting the cells and destroying the triangulation stay outside the clock.
-template <class Triangulation>
-Engine_result insert_and_count(Triangulation& triangulation, const Points& points)
+template <class Triangulation, class Point_range>
+Engine_result insert_and_count(Triangulation& triangulation, const Point_range& points)
 {
   Engine_result result;
   const Clock::time_point start = Clock::now();
@@ -147,6 +149,36 @@ Engine_result run_cgal(const Points& points, int /*threads*/)
 {
   Cgal_dt triangulation;
   return insert_and_count(triangulation, points);
+}
+
+// The same points in CGAL's exact-constructions kernel, made in the child before the clock starts (both EPEC
+// engines hold them alike): ours keeps the user's points beside its doubles and runs the double engine, CGAL's
+// triangulation runs on the lazy points throughout.
+typedef CGAL::Exact_predicates_exact_constructions_kernel Exact_kernel;
+std::vector<Exact_kernel::Point_3> exact_points(const Points& points)
+{
+  std::vector<Exact_kernel::Point_3> exact;
+  exact.reserve(points.size());
+  for(const Point& p : points) exact.emplace_back(p.x(), p.y(), p.z());
+  return exact;
+}
+
+template <class Triangulation>
+Engine_result insert_exact_points_and_count(const Points& points)
+{
+  const std::vector<Exact_kernel::Point_3> exact = exact_points(points);
+  Triangulation triangulation;
+  return insert_and_count(triangulation, exact);
+}
+
+Engine_result run_fast_epec(const Points& points, int /*threads*/)
+{
+  return insert_exact_points_and_count<CGAL::Fast_Delaunay_triangulation_3<Exact_kernel>>(points);
+}
+
+Engine_result run_cgal_epec(const Points& points, int /*threads*/)
+{
+  return insert_exact_points_and_count<CGAL::Delaunay_triangulation_3<Exact_kernel>>(points);
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -221,6 +253,8 @@ const std::vector<Engine>& engine_table()
       {"cgal-par", true, true, run_cgal_parallel},
       {"fast-par", true, true, run_fast_parallel},
 #endif
+      {"fast-epec", false, false, run_fast_epec},
+      {"cgal-epec", false, false, run_cgal_epec},
   };
   return engines;
 }
