@@ -619,8 +619,10 @@ public:
   // the third iterator each facet between two cells in conflict once.  The
   // test is the insertion's own (CGAL's perturbed in-sphere), so the zone is
   // exactly CGAL's; only the order of the output differs.  The triangulation
-  // is left unchanged (see Conflict_zone.h).  In dimension 2 CGAL's
-  // triangulation answers: triangles, their edges as (c, i).
+  // is left unchanged (see Conflict_zone.h).  A point that is no double
+  // (an exact kernel's construction) is tested with the kernel's predicates
+  // (Kernel_queries.h).  In dimension 2 CGAL's triangulation answers:
+  // triangles, their edges as (c, i).
   template <class OutputIteratorBoundaryFacets, class OutputIteratorCells, class OutputIteratorInternalFacets>
   Triple<OutputIteratorBoundaryFacets, OutputIteratorCells, OutputIteratorInternalFacets>
   find_conflicts(const Point& p, Cell_handle c, OutputIteratorBoundaryFacets bfit, OutputIteratorCells cit,
@@ -639,10 +641,14 @@ public:
       return make_triple(bfit, cit, ifit);
     }
     double q[3];
-    engine_coordinates(p, q);
+    const bool with_internal = !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value;
     Fast_Delaunay_triangulation_3_internal::Conflict_zone zone;
-    Fast_Delaunay_triangulation_3_internal::find_conflict_zone(
-        anchor_->core.mesh, c.index(), q, !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value, zone);
+    if(exact_coordinates(p, q)) {
+      Core::check_finite(q, 1);
+      Fast_Delaunay_triangulation_3_internal::find_conflict_zone(anchor_->core.mesh, c.index(), q, with_internal, zone);
+    } else {
+      kernel_queries().conflict_zone(c.index(), p, with_internal, zone);
+    }
     for(auto code : zone.boundary) *bfit++ = facet_of_code(code);
     for(Tet_id t : zone.cells) *cit++ = Cell_handle(anchor_.get(), t);
     for(auto code : zone.internal) *ifit++ = facet_of_code(code);
@@ -1392,6 +1398,7 @@ public:
     }
     anchor_->core.assign(std::move(built), built_dimension);
     anchor_->incident_cells.clear();
+    anchor_->kernel_points.clear(); // rebuilt from the doubles read
     // The file carries no infos: every vertex and cell starts with Info().
     anchor_->vertex_infos.clear();
     anchor_->user_vertices.clear();

@@ -240,6 +240,69 @@ TYPED_TEST(Kernels, DualIsCgalCircumcenter)
   }
 }
 
+// The conflict zone of each query point (cells, boundary facets, internal
+// facets, boundary vertices) as point sets; the infinite vertex as a key of
+// its own.
+TYPED_TEST(Kernels, ConflictZoneAsCgal)
+{
+  typedef typename TestFixture::Point Point;
+  typedef typename TestFixture::Fast Fast;
+  typedef typename TestFixture::Cgal Cgal;
+  const std::vector<Point> points = TestFixture::random_points();
+  const Fast ours(points.begin(), points.end());
+  const Cgal cgal(points.begin(), points.end());
+  const Key infinite(1e300, 1e300, 1e300);
+  auto vertex_key = [&](const auto& tr, const auto& v) { return tr.is_infinite(v) ? infinite : key(v->point()); };
+  auto cell_keys = [&](const auto& tr, const auto& cells) {
+    std::vector<Cell_key> keys;
+    for(const auto& c : cells) {
+      Cell_key k;
+      for(int i = 0; i < 4; ++i) k[i] = vertex_key(tr, c->vertex(i));
+      std::sort(k.begin(), k.end());
+      keys.push_back(k);
+    }
+    std::sort(keys.begin(), keys.end());
+    return keys;
+  };
+  auto facet_keys = [&](const auto& tr, const auto& facets) {
+    std::vector<std::array<Key, 3>> keys;
+    for(const auto& f : facets) {
+      std::array<Key, 3> k;
+      for(int i = 0, j = 0; i < 4; ++i)
+        if(i != f.second) k[j++] = vertex_key(tr, f.first->vertex(i));
+      std::sort(k.begin(), k.end());
+      keys.push_back(k);
+    }
+    std::sort(keys.begin(), keys.end());
+    return keys;
+  };
+  for(const Point& q : TestFixture::queries(cgal)) {
+    typename Fast::Vertex_handle v;
+    if(ours.is_vertex(q, v)) continue;
+    std::vector<typename Fast::Facet> boundary, internal;
+    std::vector<typename Fast::Cell_handle> cells;
+    std::vector<typename Cgal::Facet> cgal_boundary, cgal_internal;
+    std::vector<typename Cgal::Cell_handle> cgal_cells;
+    ours.find_conflicts(q, ours.locate(q), std::back_inserter(boundary), std::back_inserter(cells),
+                        std::back_inserter(internal));
+    cgal.find_conflicts(q, cgal.locate(q), std::back_inserter(cgal_boundary), std::back_inserter(cgal_cells),
+                        std::back_inserter(cgal_internal));
+    EXPECT_EQ(cell_keys(ours, cells), cell_keys(cgal, cgal_cells));
+    EXPECT_EQ(facet_keys(ours, boundary), facet_keys(cgal, cgal_boundary));
+    EXPECT_EQ(facet_keys(ours, internal), facet_keys(cgal, cgal_internal));
+    std::vector<typename Fast::Vertex_handle> around;
+    std::vector<typename Cgal::Vertex_handle> cgal_around;
+    ours.vertices_on_conflict_zone_boundary(q, ours.locate(q), std::back_inserter(around));
+    cgal.vertices_on_conflict_zone_boundary(q, cgal.locate(q), std::back_inserter(cgal_around));
+    std::vector<Key> a, b;
+    for(const auto& w : around) a.push_back(vertex_key(ours, w));
+    for(const auto& w : cgal_around) b.push_back(vertex_key(cgal, w));
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    EXPECT_EQ(a, b);
+  }
+}
+
 // Between barycentres of two far cells (no doubles with an exact kernel,
 // and in general position): CGAL's cells, in CGAL's order.
 TYPED_TEST(Kernels, SegmentTraverserAsCgal)
@@ -281,7 +344,9 @@ TYPED_TEST(Kernels, IoRoundTrip)
   std::stringstream file;
   file.precision(17);
   file << ours;
-  Fast back;
+  // Into a triangulation that has other points: they all go.
+  const std::vector<Point> others = TestFixture::grid();
+  Fast back(others.begin(), others.end());
   std::string error;
   ASSERT_TRUE(back.read(file, &error)) << error;
   EXPECT_EQ(finite_cells(back), finite_cells(ours));

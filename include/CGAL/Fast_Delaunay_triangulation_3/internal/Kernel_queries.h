@@ -13,6 +13,7 @@
 #ifndef CGAL_FDT3_INTERNAL_KERNEL_QUERIES_H
 #define CGAL_FDT3_INTERNAL_KERNEL_QUERIES_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Conflict_zone.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <unordered_set>
 
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
@@ -99,6 +101,35 @@ public:
     const int o = orientation_with(t, 3, p);
     if(o != 0) return o;
     return coplanar_side_of_bounded_circle(w0, w1, w2, p, perturb);
+  }
+
+  // The conflict zone of Conflict_zone.h grown from `start` (in conflict
+  // with p) by the same perturbed in-sphere test, here side_of_sphere with
+  // perturbation; the marks of the kernel's search are replaced by a set of
+  // the cells seen, so the mesh is only read.
+  void conflict_zone(Tet_id start, const Point& p, bool with_internal, Conflict_zone& zone) const
+  {
+    zone.cells.assign(1, start);
+    std::unordered_set<Tet_id> in_zone = {start}, outside;
+    for(std::size_t k = 0; k < zone.cells.size(); ++k)
+      for(int f = 0; f < 4; ++f) {
+        const Tet_id u = m_.neighbor(zone.cells[k], f);
+        if(in_zone.count(u) != 0 || outside.count(u) != 0) continue;
+        if(side_of_sphere(u, p, true) > 0) {
+          in_zone.insert(u);
+          zone.cells.push_back(u);
+        } else {
+          outside.insert(u);
+        }
+      }
+    zone.boundary.clear();
+    zone.internal.clear();
+    for(const Tet_id t : zone.cells)
+      for(int f = 0; f < 4; ++f) {
+        const Tet_id u = m_.neighbor(t, f);
+        if(in_zone.count(u) == 0) zone.boundary.push_back(facet_code(t, f));
+        else if(with_internal && t < u) zone.internal.push_back(facet_code(t, f));
+      }
   }
 
   // CGAL's coplanar_side_of_bounded_circle(p0, p1, p2, p, perturb) for

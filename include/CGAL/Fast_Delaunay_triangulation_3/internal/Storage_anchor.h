@@ -52,8 +52,9 @@ public:
   // must name the copy.
   Storage_anchor(const Storage_anchor& other)
       : traits(other.traits), core(other.core), incident_cells(other.incident_cells),
-        kernel_points(other.kernel_points), vertex_infos(other.vertex_infos), cell_infos(other.cell_infos), user_vertices(other.user_vertices),
-        user_cells(other.user_cells), dimension_seen_(other.dimension_seen_), vertices_seen_(other.vertices_seen_)
+        kernel_points(other.kernel_points), vertex_infos(other.vertex_infos), cell_infos(other.cell_infos),
+        user_vertices(other.user_vertices), user_cells(other.user_cells), dimension_seen_(other.dimension_seen_),
+        vertices_seen_(other.vertices_seen_)
   {
     user_vertices.attach(this);
   }
@@ -111,10 +112,13 @@ public:
   int dimension() const { return core.dimension; }
   Point point_of(Vertex_id v) const
   {
-    if constexpr(keeps_kernel_points) return kernel_points.at(v);
-    if(v == ghost_vertex) return Point(0, 0, 0);
-    const double* p = core.mesh.point(v);
-    return Point(p[0], p[1], p[2]);
+    if constexpr(keeps_kernel_points) {
+      return kernel_points.at(v);
+    } else {
+      if(v == ghost_vertex) return Point(0, 0, 0);
+      const double* p = core.mesh.point(v);
+      return Point(p[0], p[1], p[2]);
+    }
   }
   template <class Info = Vertex_info>
   Info& vertex_info(Vertex_id v) const { return vertex_infos.at(v); }
