@@ -1,5 +1,6 @@
 // Any CGAL kernel: one test body instantiated for EPEC, EPEC with
-// Fast_location, Simple_cartesian<double> and EPICK, each against
+// Fast_location, Simple_cartesian<double>, EPICK and
+// Simple_cartesian<Exact_rational> (exact, not lazy), each against
 // CGAL::Delaunay_triangulation_3 of the same kernel (and location policy) on
 // the same points.  Points with double coordinates go through the double
 // engine; the kernel's own objects come back from v->point(); queries at
@@ -14,6 +15,7 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <gtest/gtest.h>
@@ -35,6 +37,7 @@ using fdt3_test::Xyz;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epec;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Simple_cartesian<double> Cartesian;
+typedef CGAL::Simple_cartesian<CGAL::Exact_rational> Rational;
 
 template <class K, class... Policy>
 struct Config
@@ -45,7 +48,8 @@ struct Config
   static constexpr bool exact_constructions = !std::is_same<typename K::FT, double>::value;
 };
 
-typedef ::testing::Types<Config<Epec>, Config<Epec, CGAL::Fast_location>, Config<Cartesian>, Config<Epick>>
+typedef ::testing::Types<Config<Epec>, Config<Epec, CGAL::Fast_location>, Config<Cartesian>, Config<Epick>,
+                         Config<Rational>>
     Configs;
 
 // The coordinates of a point that has double coordinates, compared as

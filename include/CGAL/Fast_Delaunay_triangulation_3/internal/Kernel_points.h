@@ -30,6 +30,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -48,8 +49,9 @@ struct Is_lazy<T, std::void_t<decltype(std::declval<const T&>().approx()),
 // True, with d = x, when the number x is exactly a double.  An interval
 // that is one double proves it; otherwise the exact value decides (for a
 // lazy number made from doubles the first test answers, without computing
-// anything).  The interval of an exact number type is the tightest pair of
-// doubles around it, so a non-degenerate one means x is no double.
+// anything).  CGAL's intervals of its exact rationals are the tightest pair
+// of doubles around the value; for a number type whose interval is wider,
+// an end equal to x still counts.
 template <class FT>
 bool exact_double(const FT& x, double& d)
 {
@@ -65,9 +67,12 @@ bool exact_double(const FT& x, double& d)
     return exact_double(x.exact(), d);
   } else {
     const std::pair<double, double> i = CGAL::to_interval(x);
-    if(i.first != i.second) return false;
-    d = i.first;
-    return true;
+    for(const double end : {i.first, i.second})
+      if(i.first == i.second || FT(end) == x) {
+        d = end;
+        return true;
+      }
+    return false;
   }
 }
 
