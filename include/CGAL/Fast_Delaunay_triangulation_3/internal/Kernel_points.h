@@ -28,6 +28,7 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/number_utils.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
@@ -60,8 +61,10 @@ bool exact_double(const FT& x, double& d)
     return true;
   } else if constexpr(Is_lazy<FT>::value) {
     const Interval_nt<false>& i = x.approx();
-    if(i.inf() == i.sup()) {
-      d = i.inf();
+    // A lazy number made from NaN (which CGAL's debug builds refuse) has a
+    // NaN interval and no exact value: the NaN goes on, for check_finite.
+    if(i.inf() == i.sup() || std::isnan(i.inf()) || std::isnan(i.sup())) {
+      d = std::isnan(i.sup()) ? i.sup() : i.inf();
       return true;
     }
     return exact_double(x.exact(), d);
@@ -85,8 +88,13 @@ bool exact_coordinates(const Point& p, double* xyz)
   if constexpr(Is_lazy<Point>::value) {
     const auto& a = p.approx();
     const Interval_nt<false> i[3] = {a.x(), a.y(), a.z()};
-    if(i[0].is_point() && i[1].is_point() && i[2].is_point()) {
-      for(int k = 0; k < 3; ++k) xyz[k] = i[k].inf();
+    bool doubles = true, nan = false;
+    for(int k = 0; k < 3; ++k) {
+      doubles = doubles && i[k].is_point();
+      nan = nan || std::isnan(i[k].inf()) || std::isnan(i[k].sup());
+    }
+    if(doubles || nan) { // a NaN, as in exact_double, goes on for check_finite
+      for(int k = 0; k < 3; ++k) xyz[k] = std::isnan(i[k].sup()) ? i[k].sup() : i[k].inf();
       return true;
     }
     return exact_coordinates(p.exact(), xyz);
