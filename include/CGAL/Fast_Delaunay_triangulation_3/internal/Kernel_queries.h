@@ -69,13 +69,7 @@ public:
       }
       if(exit < 0) return location_from_orientations(t, o);
       t = m_.neighbor(t, exit);
-      if(m_.is_ghost(t)) {
-        Location loc;
-        loc.cell = t;
-        loc.type = Location_type::outside_convex_hull;
-        loc.li = 3;
-        return loc;
-      }
+      if(m_.is_ghost(t)) return outside_hull(t);
     }
   }
 

@@ -96,17 +96,19 @@ inline Location classify_in_cell(const Flat_storage& m, Tet_id t, const double* 
 // CGAL's semantics in dimension 3: a point on the hull boundary is located in
 // a finite cell; a point outside is located in the ghost cell of a hull facet
 // that sees it strictly, li being its infinite vertex.
+inline Location outside_hull(Tet_id ghost)
+{
+  Location loc;
+  loc.cell = ghost;
+  loc.type = Location_type::outside_convex_hull;
+  loc.li = 3;
+  return loc;
+}
+
 inline Location locate(const Flat_storage& m, Tet_id start, const double* p)
 {
   const Tet_id t = walk_to(m, start, p);
-  if(m.is_ghost(t)) {
-    Location loc;
-    loc.cell = t;
-    loc.type = Location_type::outside_convex_hull;
-    loc.li = 3;
-    return loc;
-  }
-  return classify_in_cell(m, t, p);
+  return m.is_ghost(t) ? outside_hull(t) : classify_in_cell(m, t, p);
 }
 
 // Position of p, coplanar with the non-degenerate triangle (a, b, c), with
