@@ -478,10 +478,7 @@ public:
       } else {
         append_coordinates(first, last, xyz, typename std::iterator_traits<InputIterator>::iterator_category());
       }
-      const Vertex_id old_count = vertex_count();
-      const std::ptrdiff_t added = insert_coordinates(xyz, ids);
-      keep_inputs(points, vertex_of_input, old_count);
-      return added;
+      return insert_coordinates(xyz, ids, &points);
     } else {
       static_assert(!std::is_void<Vertex_info>::value,
                     "points with infos need a vertex base with info (Triangulation_vertex_base_with_info_3)");
@@ -490,10 +487,8 @@ public:
         if constexpr(keeps_kernel_points) points.push_back(p);
         append_coordinates(xyz, p);
       });
-      const Vertex_id old_count = vertex_count();
-      const std::ptrdiff_t added = insert_coordinates(xyz, &vertex_of_input);
+      const std::ptrdiff_t added = insert_coordinates(xyz, &vertex_of_input, &points);
       anchor_->vertex_infos.assign(vertex_of_input, infos);
-      keep_inputs(points, vertex_of_input, old_count);
       return added;
     }
   }
@@ -1665,14 +1660,17 @@ private:
 
   // Consumes `xyz`: the core frees it once the vertex records are written,
   // so the copy of the input does not stay resident while the mesh grows.
-  std::ptrdiff_t insert_coordinates(std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input)
+  // `points`: the user's objects of the range, empty when the kernel's FT
+  // is double (then vertex_of_input may be null).
+  std::ptrdiff_t insert_coordinates(std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input,
+                                    const std::vector<Point>* points)
   {
     const std::size_t n = xyz.size() / 3;
     Core::check_finite(xyz.data(), n);
     anchor_->incident_cells.clear();
     anchor_->core.partitions = partitions_for_insertion();
     const std::size_t added = anchor_->core.insert(xyz.data(), n, vertex_of_input, &xyz);
-    vertices_added();
+    anchor_->vertices_added(points->empty() ? nullptr : points, vertex_of_input);
     return static_cast<std::ptrdiff_t>(added);
   }
 
@@ -1724,15 +1722,8 @@ private:
             << " the triangulation is unchanged";
     throw std::invalid_argument(message.str());
   }
-  // After an insertion of points[i] as vertex vertex_of_input[i]: each new
-  // vertex (id from old_count on) keeps the user's object.
-  void keep_inputs(const std::vector<Point>& points, const std::vector<Vertex_id>& vertex_of_input,
-                   Vertex_id old_count)
-  {
-    if constexpr(keeps_kernel_points)
-      for(std::size_t i = 0; i < points.size(); ++i)
-        if(vertex_of_input[i] >= old_count) anchor_->kernel_points.keep_input(vertex_of_input[i], points[i]);
-  }
+  // After the insertion of p as vertex v: a new vertex (id from old_count
+  // on) keeps the user's object.
   void keep_input(Vertex_id v, const Point& p, Vertex_id old_count)
   {
     if(v >= old_count && v != Fast_Delaunay_triangulation_3_internal::ghost_vertex)

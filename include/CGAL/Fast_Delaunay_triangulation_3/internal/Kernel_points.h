@@ -133,10 +133,11 @@ void nearest_coordinates(const Point& p, double* xyz)
 }
 
 // One kernel point per vertex id (`keep`: the kernel's FT is not double).
-// After every insertion resize() gives each new vertex the point of its
-// doubles (equal to the one inserted: only exact doubles are inserted);
-// the public class then puts the user's own object in its place where it
-// has it.
+// After every insertion resize() gives each new vertex the user's object
+// inserted[i] for which vertex_of_input[i] is that vertex, if given, else
+// the point of its doubles (equal to the one inserted: only exact doubles
+// are inserted); building a lazy point per vertex only to drop it for the
+// user's was +64 bytes and one allocation per point.
 template <class Point, bool keep>
 class Kernel_points
 {
@@ -149,14 +150,28 @@ public:
     CGAL_assertion(v < points_.size());
     return points_[v];
   }
-  void resize(const Flat_storage& m)
+  void resize(const Flat_storage& m, const std::vector<Point>* inserted = nullptr,
+              const std::vector<Vertex_id>* vertex_of_input = nullptr)
   {
     const std::size_t n = m.vertices.size();
-    if(points_.size() > n) points_.resize(n, infinite_);
-    points_.reserve(n);
-    for(std::size_t v = points_.size(); v < n; ++v) {
+    if(points_.size() >= n) {
+      points_.resize(n, infinite_);
+      return;
+    }
+    const std::size_t first_new = points_.size();
+    std::vector<bool> given(n - first_new, false);
+    points_.resize(n, infinite_);
+    if(inserted != nullptr)
+      for(std::size_t i = 0; i < inserted->size(); ++i) {
+        const Vertex_id v = (*vertex_of_input)[i];
+        if(v < first_new || given[v - first_new]) continue;
+        points_[v] = (*inserted)[i];
+        given[v - first_new] = true;
+      }
+    for(std::size_t v = first_new; v < n; ++v) {
+      if(given[v - first_new]) continue;
       const double* x = m.point(static_cast<Vertex_id>(v));
-      points_.emplace_back(x[0], x[1], x[2]);
+      points_[v] = Point(x[0], x[1], x[2]);
     }
   }
   // The user's object for vertex v (equal to the point of its doubles).
@@ -176,7 +191,7 @@ template <class Point>
 class Kernel_points<Point, false>
 {
 public:
-  void resize(const Flat_storage&) {}
+  void resize(const Flat_storage&, const std::vector<Point>* = nullptr, const std::vector<Vertex_id>* = nullptr) {}
   void keep_input(Vertex_id, const Point&) {}
   void clear() {}
 };

@@ -87,10 +87,13 @@ public:
   // do the triangles that one new vertex lifts to tetrahedra.  (When several
   // new vertices lift the dimension, which cells CGAL keeps depends on its
   // insertion order: all get Info().)
-  void vertices_added()
+  // `inserted`, `vertex_of_input`: the user's points of a range and their
+  // vertices, kept as the new vertices' kernel points (Kernel_points.h).
+  void vertices_added(const std::vector<Point>* inserted = nullptr,
+                      const std::vector<Vertex_id>* vertex_of_input = nullptr)
   {
     const std::size_t n = core.number_of_vertices();
-    kernel_points.resize(core.mesh);
+    kernel_points.resize(core.mesh, inserted, vertex_of_input);
     vertex_infos.resize(n);
     user_vertices.resize(this, n);
     if(core.lower.active()) {
