@@ -47,6 +47,17 @@ template <class T>
 struct Is_lazy<T, std::void_t<decltype(std::declval<const T&>().approx()),
                               decltype(std::declval<const T&>().exact())>> : std::true_type {};
 
+// A lazy number made from NaN or infinity (which CGAL's debug builds refuse),
+// or beyond the doubles' range, has an interval with a NaN or infinite bound
+// and an exact value that GMP cannot make (it raises SIGFPE): that bound
+// goes on as the coordinate, for check_finite to name.
+inline bool non_finite_bound(const Interval_nt<false>& i, double& d)
+{
+  if(std::isfinite(i.inf()) && std::isfinite(i.sup())) return false;
+  d = std::isnan(i.inf()) || !std::isfinite(i.sup()) ? i.sup() : i.inf();
+  return true;
+}
+
 // True, with d = x, when the number x is exactly a double.  An interval
 // that is one double proves it; otherwise the exact value decides (for a
 // lazy number made from doubles the first test answers, without computing
@@ -61,10 +72,9 @@ bool exact_double(const FT& x, double& d)
     return true;
   } else if constexpr(Is_lazy<FT>::value) {
     const Interval_nt<false>& i = x.approx();
-    // A lazy number made from NaN (which CGAL's debug builds refuse) has a
-    // NaN interval and no exact value: the NaN goes on, for check_finite.
-    if(i.inf() == i.sup() || std::isnan(i.inf()) || std::isnan(i.sup())) {
-      d = std::isnan(i.sup()) ? i.sup() : i.inf();
+    if(non_finite_bound(i, d)) return true;
+    if(i.inf() == i.sup()) {
+      d = i.inf();
       return true;
     }
     return exact_double(x.exact(), d);
@@ -88,16 +98,13 @@ bool exact_coordinates(const Point& p, double* xyz)
   if constexpr(Is_lazy<Point>::value) {
     const auto& a = p.approx();
     const Interval_nt<false> i[3] = {a.x(), a.y(), a.z()};
-    bool doubles = true, nan = false;
+    bool doubles = true, non_finite = false;
     for(int k = 0; k < 3; ++k) {
+      if(non_finite_bound(i[k], xyz[k])) non_finite = true;
+      else xyz[k] = i[k].inf();
       doubles = doubles && i[k].is_point();
-      nan = nan || std::isnan(i[k].inf()) || std::isnan(i[k].sup());
     }
-    if(doubles || nan) { // a NaN, as in exact_double, goes on for check_finite
-      for(int k = 0; k < 3; ++k) xyz[k] = std::isnan(i[k].sup()) ? i[k].sup() : i[k].inf();
-      return true;
-    }
-    return exact_coordinates(p.exact(), xyz);
+    return doubles || non_finite || exact_coordinates(p.exact(), xyz);
   } else {
     return exact_double(p.x(), xyz[0]) && exact_double(p.y(), xyz[1]) && exact_double(p.z(), xyz[2]);
   }
