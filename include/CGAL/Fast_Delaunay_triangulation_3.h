@@ -854,11 +854,20 @@ public:
   // infinite vertex.  The cell found may differ from CGAL's when several
   // qualify (a point on a facet, an edge or a vertex); lt never does.  Below
   // dimension 3, CGAL's locate on CGAL's triangulation of the same vertices
-  // answers (Lower_dimensions.h), from the start cell given.
+  // answers (Lower_dimensions.h), from the start cell given; a point that is
+  // no double is located by the kernel's predicates (Kernel_queries.h).
   Cell_handle locate(const Point& p, Locate_type& lt, int& li, int& lj, Cell_handle start = Cell_handle(),
                      bool* could_lock_zone = nullptr) const
   {
     if(could_lock_zone) *could_lock_zone = true;
+    double q[3];
+    if(dimension() < 3 && !exact_coordinates(p, q)) {
+      const Fast_Delaunay_triangulation_3_internal::Location loc = kernel_queries().locate_below_dimension_3(p);
+      lt = static_cast<Locate_type>(loc.type);
+      if(loc.li >= 0) li = loc.li;
+      if(loc.lj >= 0) lj = loc.lj;
+      return loc.cell == Tet_id(-1) ? Cell_handle() : Cell_handle(anchor_.get(), loc.cell);
+    }
     if(dimension() < 3) {
       typename Lower::Locate_type type;
       const Reference_cell c = lower().delaunay().locate(to_reference(p), type, li, lj, to_reference(start));
@@ -866,7 +875,6 @@ public:
       return from_reference(c);
     }
     const Tet_id from = start ? start.index() : Tet_id(-1);
-    double q[3];
     const Fast_Delaunay_triangulation_3_internal::Location loc =
         exact_coordinates(p, q) ? Fast_Delaunay_triangulation_3_internal::locate(anchor_->core.mesh, from, q)
                                 : kernel_queries().locate(from, p);

@@ -221,6 +221,83 @@ TYPED_TEST(Kernels, LocateAndNearestVertexAsCgal)
   }
 }
 
+// Below dimension 3 (one point, collinear points, coplanar points): lt as
+// CGAL's, and the face found holds the same points.  With an exact kernel
+// the queries are no doubles: on edges, in triangles, beyond the hull, off
+// the affine hull.
+TYPED_TEST(Kernels, LocateBelowDimension3AsCgal)
+{
+  typedef typename TestFixture::Point Point;
+  typedef typename TestFixture::FT FT;
+  typedef typename TestFixture::Fast Fast;
+  typedef typename TestFixture::Cgal Cgal;
+  std::vector<Point> line, plane;
+  for(int i = 0; i < 7; ++i) line.push_back(Point(i * i, 2 * i * i, 0));
+  for(int i = 0; i < 5; ++i)
+    for(int j = 0; j < 5; ++j) plane.push_back(Point(i + 0.25 * (j % 2), j, 0));
+  for(const auto& points : {std::vector<Point>(1, Point(1, 2, 3)), line, plane}) {
+    const Fast ours(points.begin(), points.end());
+    const Cgal cgal(points.begin(), points.end());
+    ASSERT_EQ(ours.dimension(), cgal.dimension());
+    std::vector<Point> queries = {Point(0.5, 0.5, 0), Point(100, 3, 0), Point(1, 2, 0)};
+    if constexpr(TypeParam::exact_constructions) {
+      const FT third = FT(1) / 3;
+      if(points.size() > 1) queries.push_back(CGAL::barycenter(points.front(), 4, points.back(), -3));
+      for(std::size_t k = 0; k + 2 < points.size(); ++k) {
+        queries.push_back(CGAL::barycenter(points[k], 1, points[k + 1], 2));
+        queries.push_back(CGAL::barycenter(points[k], 1, points[k + 1], 2, points[k + 2], 4));
+        queries.push_back(CGAL::barycenter(points[k], -1, points[k + 1], 3));
+        queries.push_back(Point(points[k].x(), points[k].y(), third));
+        queries.push_back(Point(points[k].x() * 5 + third, points[k].y() * 10 - third, 0));
+      }
+    }
+    std::map<int, int> seen;
+    for(const Point& q : queries) {
+      typename Fast::Locate_type lt;
+      typename Cgal::Locate_type clt;
+      int li = -1, lj = -1, cli = -1, clj = -1;
+      const typename Fast::Cell_handle c = ours.locate(q, lt, li, lj);
+      const typename Cgal::Cell_handle cc = cgal.locate(q, clt, cli, clj);
+      ASSERT_EQ(static_cast<int>(lt), static_cast<int>(clt));
+      ++seen[static_cast<int>(lt)];
+      if(lt == Fast::EDGE) {
+        std::array<Key, 2> a = {key(c->vertex(li)->point()), key(c->vertex(lj)->point())},
+                           b = {key(cc->vertex(cli)->point()), key(cc->vertex(clj)->point())};
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        EXPECT_EQ(a, b);
+      }
+      if(lt == Fast::FACET) {
+        std::array<Key, 3> a, b;
+        for(int k = 0; k < 3; ++k) {
+          a[k] = key(c->vertex(k)->point());
+          b[k] = key(cc->vertex(k)->point());
+        }
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        EXPECT_EQ(a, b);
+      }
+      if(lt == Fast::OUTSIDE_CONVEX_HULL) {
+        EXPECT_TRUE(ours.is_infinite(c));
+      }
+      typename Fast::Vertex_handle v;
+      EXPECT_EQ(ours.is_vertex(q, v), lt == Fast::VERTEX);
+      // Ties are broken differently: the distance is CGAL's.
+      EXPECT_EQ(typename TestFixture::K().compare_distance_3_object()(q, ours.nearest_vertex(q)->point(),
+                                                                       cgal.nearest_vertex(q)->point()),
+                CGAL::EQUAL);
+    }
+    if constexpr(TypeParam::exact_constructions) {
+      EXPECT_GE(seen[Fast::OUTSIDE_AFFINE_HULL], 1);
+      if(points.size() > 1) {
+        EXPECT_GE(seen[Fast::EDGE], 1);
+        EXPECT_GE(seen[Fast::OUTSIDE_CONVEX_HULL], 1);
+      }
+      if(points.size() > 7) EXPECT_GE(seen[Fast::FACET], 1);
+    }
+  }
+}
+
 TYPED_TEST(Kernels, DualIsCgalCircumcenter)
 {
   typedef typename TestFixture::Point Point;
@@ -458,10 +535,11 @@ TYPED_TEST(Kernels, InputNotRepresentableAsDoublesIsRefused)
       EXPECT_EQ(ours.number_of_vertices(), points.size());
     }
 #endif
-    // Below dimension 3 a query point must be a double too.
+    // Below dimension 3, queries other than locate need doubles too.
     const std::vector<Point> plane = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
     const Fast flat(plane.begin(), plane.end());
-    EXPECT_THROW(flat.locate(third), std::invalid_argument);
+    const Point in_plane(FT(1) / 3, FT(1) / 7, 0);
+    EXPECT_THROW(flat.side_of_circle(flat.finite_facets_begin()->first, 3, in_plane), std::invalid_argument);
   }
 }
 

@@ -42,7 +42,9 @@ is answered exactly with `Gt`'s own predicates on the kernel points and the
 same perturbation: `locate()`, `side_of_cell()`, `side_of_sphere()`,
 `side_of_circle()`, `nearest_vertex()`, `is_vertex()`, `find_conflicts()`,
 `vertices_on_conflict_zone_boundary()` and the segment traverser between two
-points.
+points. Below dimension 3 `locate()` (so `is_vertex()`) and
+`nearest_vertex()` answer such points exactly too, with the same `lt`, `li`,
+`lj` as CGAL (the cell is none outside the affine hull).
 
 \tparam Tds_ is accepted so that the class can be named with the template
 arguments of `Delaunay_triangulation_3`; the combinatorics always live in
@@ -113,8 +115,9 @@ Default: `Default`.
   the point's position in the input and saying "coordinates not
   representable as doubles", and the triangulation is unchanged (nothing of
   a range is inserted). The same holds for `insert_in_hole()`, and below
-  dimension 3 for query points (CGAL's triangulation of the vertices'
-  doubles answers there).
+  dimension 3 for the queries other than `locate()`, `is_vertex()` and
+  `nearest_vertex()` (CGAL's triangulation of the vertices' doubles answers
+  there).
   `Delaunay_triangulation_3<Epeck>` accepts such points. A point made by a
   construction whose value is a double (\f$ (1/3) \cdot 3 \f$) is accepted.
 - At most \f$ 2^{32} - 2 \f$ vertices (`std::length_error` beyond).

@@ -73,6 +73,69 @@ public:
     }
   }
 
+  // Below dimension 3 (the cells are CGAL's, copied to the slots, the
+  // infinite vertex in any slot up to the dimension): CGAL's locate of p,
+  // which is no vertex, by a scan of the cells.  Outside the affine hull
+  // the cell is none; outside the hull an infinite cell whose finite face
+  // separates p from the hull, li its infinite vertex.
+  Location locate_below_dimension_3(const Point& p) const
+  {
+    Location loc;
+    loc.cell = Tet_id(-1);
+    const int d = a_.dimension();
+    if(d < 1) return loc; // no vertex, or one that p is not
+    const Tet_id finite = first_finite_cell();
+    const Point u = point(finite, 0), w = point(finite, 1);
+    const bool in_hull = d == 1 ? bool(a_.traits.collinear_3_object()(u, w, p))
+                                : a_.traits.orientation_3_object()(u, w, point(finite, 2), p) == COPLANAR;
+    if(!in_hull) return loc;
+    for(Tet_id t = 0; t < m_.number_of_slots(); ++t) {
+      if(!m_.is_live(t) || a_.has_infinite_vertex(t)) continue;
+      if(d == 1) {
+        if(!a_.traits.collinear_are_strictly_ordered_along_line_3_object()(point(t, 0), p, point(t, 1))) continue;
+        loc.cell = t;
+        loc.type = Location_type::edge;
+        loc.li = 0;
+        loc.lj = 1;
+        return loc;
+      }
+      Location_type type;
+      int i = -1, j = -1;
+      if(side_of_triangle(a_.traits, p, point(t, 0), point(t, 1), point(t, 2), type, i, j) == ON_UNBOUNDED_SIDE)
+        continue;
+      loc.cell = t;
+      loc.type = type;
+      loc.li = type == Location_type::facet ? 3 : i;
+      loc.lj = type == Location_type::edge ? j : -1;
+      return loc;
+    }
+    // Outside the hull: the infinite cell of a hull face (a vertex, an edge)
+    // that p is strictly beyond, seen from the finite cell across it.
+    for(Tet_id t = 0; t < m_.number_of_slots(); ++t) {
+      if(!m_.is_live(t) || !a_.has_infinite_vertex(t)) continue;
+      const int g = m_.vertex(t, 0) == ghost_vertex ? 0 : m_.vertex(t, 1) == ghost_vertex ? 1 : 2;
+      const Tet_id n = m_.neighbor(t, g);
+      const int k = index_in(n, t);
+      const Point x = point(n, k); // the finite cell's vertex off the hull face
+      bool beyond;
+      if(d == 1) {
+        beyond = a_.traits.collinear_are_strictly_ordered_along_line_3_object()(p, point(t, 1 - g), x);
+      } else {
+        const Point f0 = point(t, (g + 1) % 3), f1 = point(t, (g + 2) % 3);
+        const auto coplanar_orientation = a_.traits.coplanar_orientation_3_object();
+        const Orientation op = coplanar_orientation(f0, f1, p);
+        beyond = op != COLLINEAR && op != coplanar_orientation(f0, f1, x);
+      }
+      if(!beyond) continue;
+      loc.cell = t;
+      loc.type = Location_type::outside_convex_hull;
+      loc.li = g;
+      return loc;
+    }
+    CGAL_assertion_msg(false, "no cell holds or sees a point of the affine hull");
+    return loc;
+  }
+
   Bounded_side side_of_cell(Tet_id t, const Point& p, Location_type& lt, int& i, int& j) const
   {
     return Fast_Delaunay_triangulation_3_internal::side_of_cell(
@@ -154,6 +217,21 @@ private:
   const Flat_storage& m_;
 
   Point point(Tet_id t, int i) const { return a_.point_of(m_.vertex(t, i)); }
+  Tet_id first_finite_cell() const
+  {
+    for(Tet_id t = 0; t < m_.number_of_slots(); ++t)
+      if(m_.is_live(t) && !a_.has_infinite_vertex(t)) return t;
+    CGAL_assertion_msg(false, "no finite cell in dimension 1 or 2");
+    return 0;
+  }
+  // The slot of n's neighbour t in n (n and t adjacent below dimension 3).
+  int index_in(Tet_id n, Tet_id t) const
+  {
+    const int last = a_.dimension();
+    for(int i = 0; i < last; ++i)
+      if(m_.neighbor(n, i) == t) return i;
+    return last;
+  }
   bool smaller(const Point& x, const Point& y) const
   {
     return a_.traits.compare_xyz_3_object()(x, y) == SMALLER;
