@@ -9,14 +9,18 @@
 //
 // Rows fast-remove / cgal-remove and fast-move / cgal-move (not run by default) time the removal of 10% of the
 // vertices one by one, and the move of 10% by a small random displacement, after an untimed insertion of all points;
-// each is compared with its CGAL counterpart.
+// rows fast-epec / cgal-epec (not run by default) time the insertion of the same points as points of CGAL's exact
+// constructions kernel; each is compared with its CGAL counterpart.
 //
-// Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all] [--engines fast,cgal,cgal-par,fast-par]
+// Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all]
+//                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-move,cgal-move,
+//                                      fast-epec,cgal-epec]
 //                           [--rounds 3] [--threads 2[,1...]] [--phases] [--verbose] [--csv]
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/version.h>
 #ifdef CGAL_LINKED_WITH_TBB
@@ -122,8 +126,8 @@ double seconds_since(Clock::time_point start)
 }
 
 // Times only the insertion; counting the cells and destroying the triangulation stay outside the clock.
-template <class Triangulation>
-Engine_result insert_and_count(Triangulation& triangulation, const Points& points)
+template <class Triangulation, class Point_range>
+Engine_result insert_and_count(Triangulation& triangulation, const Point_range& points)
 {
   Engine_result result;
   const Clock::time_point start = Clock::now();
@@ -215,6 +219,36 @@ Engine_result run_cgal_remove(const Points& points, int /*threads*/) { return re
 Engine_result run_fast_move(const Points& points, int /*threads*/) { return move_tenth<Fast_dt>(points); }
 Engine_result run_cgal_move(const Points& points, int /*threads*/) { return move_tenth<Cgal_dt>(points); }
 
+// The same points in CGAL's exact-constructions kernel, made in the child before the clock starts (both EPEC
+// engines hold them alike): ours keeps the user's points beside its doubles and runs the double engine, CGAL's
+// triangulation runs on the lazy points throughout.
+typedef CGAL::Exact_predicates_exact_constructions_kernel Exact_kernel;
+std::vector<Exact_kernel::Point_3> exact_points(const Points& points)
+{
+  std::vector<Exact_kernel::Point_3> exact;
+  exact.reserve(points.size());
+  for(const Point& p : points) exact.emplace_back(p.x(), p.y(), p.z());
+  return exact;
+}
+
+template <class Triangulation>
+Engine_result insert_exact_points_and_count(const Points& points)
+{
+  const std::vector<Exact_kernel::Point_3> exact = exact_points(points);
+  Triangulation triangulation;
+  return insert_and_count(triangulation, exact);
+}
+
+Engine_result run_fast_epec(const Points& points, int /*threads*/)
+{
+  return insert_exact_points_and_count<CGAL::Fast_Delaunay_triangulation_3<Exact_kernel>>(points);
+}
+
+Engine_result run_cgal_epec(const Points& points, int /*threads*/)
+{
+  return insert_exact_points_and_count<CGAL::Delaunay_triangulation_3<Exact_kernel>>(points);
+}
+
 #ifdef CGAL_LINKED_WITH_TBB
 typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<Kernel>,
                                              CGAL::Delaunay_triangulation_cell_base_3<Kernel>, CGAL::Parallel_tag>
@@ -293,6 +327,8 @@ const std::vector<Engine>& engine_table()
       {"cgal-remove", false, false, run_cgal_remove, "cgal-remove"},
       {"fast-move", false, false, run_fast_move, "cgal-move"},
       {"cgal-move", false, false, run_cgal_move, "cgal-move"},
+      {"fast-epec", false, false, run_fast_epec, "cgal-epec"},
+      {"cgal-epec", false, false, run_cgal_epec, "cgal-epec"},
   };
   return engines;
 }

@@ -17,6 +17,8 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Conflict_zone.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Equality.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_points.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_queries.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Segment_traverser.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Simplex.h>
@@ -98,9 +100,6 @@ class Fast_Delaunay_triangulation_3 : public Triangulation_utils_3
   typedef typename Lower::Reference_vertex Reference_vertex;
   typedef typename Lower::Delaunay::Facet Reference_facet;
   typedef typename Lower::Delaunay::Edge Reference_edge;
-
-  static_assert(std::is_same<typename Gt::FT, double>::value,
-                "Fast_Delaunay_triangulation_3 needs a kernel with double coordinates (e.g. Epick)");
 
 public:
   typedef Gt Geom_traits;
@@ -546,17 +545,28 @@ public:
   {
     typedef typename std::iterator_traits<InputIterator>::value_type Value;
     std::vector<double> xyz;
+    // With a kernel whose FT is not double, the user's points are kept
+    // (Kernel_points.h): gathered first, their doubles checked exact.
+    std::vector<Point> points;
+    std::vector<Vertex_id> vertex_of_input;
+    std::vector<Vertex_id>* const ids = keeps_kernel_points ? &vertex_of_input : nullptr;
     if constexpr(std::is_convertible<Value, Point>::value) {
-      append_coordinates(first, last, xyz,
-                         typename std::iterator_traits<InputIterator>::iterator_category());
-      return insert_coordinates(xyz, nullptr);
+      if constexpr(keeps_kernel_points) {
+        points.assign(first, last);
+        append_coordinates(points.begin(), points.end(), xyz, std::forward_iterator_tag());
+      } else {
+        append_coordinates(first, last, xyz, typename std::iterator_traits<InputIterator>::iterator_category());
+      }
+      return insert_coordinates(xyz, ids, &points);
     } else {
       static_assert(!std::is_void<Vertex_info>::value,
                     "points with infos need a vertex base with info (Triangulation_vertex_base_with_info_3)");
       std::vector<Vertex_info> infos;
-      Fast_Delaunay_triangulation_3_internal::read_points_and_infos(first, last, xyz, infos);
-      std::vector<Vertex_id> vertex_of_input;
-      const std::ptrdiff_t added = insert_coordinates(xyz, &vertex_of_input);
+      Fast_Delaunay_triangulation_3_internal::read_points_and_infos(first, last, infos, [&](const Point& p) {
+        if constexpr(keeps_kernel_points) points.push_back(p);
+        append_coordinates(xyz, p);
+      });
+      const std::ptrdiff_t added = insert_coordinates(xyz, &vertex_of_input, &points);
       anchor_->vertex_infos.assign(vertex_of_input, infos);
       return added;
     }
@@ -564,12 +574,14 @@ public:
 
   Vertex_handle insert(const Point& p)
   {
-    const double xyz[3] = {p.x(), p.y(), p.z()};
-    Core::check_finite(xyz, 1);
+    double xyz[3];
+    engine_coordinates(p, xyz);
     anchor_->incident_cells.clear();
     anchor_->core.partitions = 1; // one point: no partitioned round to run
+    const Vertex_id old_count = vertex_count();
     const Vertex_id v = anchor_->core.insert_one(xyz);
     vertices_added();
+    keep_input(v, p, old_count);
     return Vertex_handle(anchor_.get(), v);
   }
   // CGAL's insert(p, hint): in dimension 3 the kernel's walk starts at the
@@ -676,20 +688,23 @@ public:
   {
     CGAL_precondition(dimension() >= 2);
     CGAL_precondition(begin != Cell_handle() && i >= 0 && i <= dimension());
-    const double xyz[3] = {p.x(), p.y(), p.z()};
-    Core::check_finite(xyz, 1);
+    double xyz[3];
+    engine_coordinates(p, xyz);
     std::vector<Tet_id> hole, ball;
     for(; cells_begin != cells_end; ++cells_begin) {
       const Cell_handle c = *cells_begin;
       hole.push_back(c.index());
     }
+    const Vertex_id old_count = vertex_count();
+    Vertex_id v;
     if(dimension() == 2) {
-      const Vertex_id v = anchor_->core.insert_in_hole_below_dimension_3(xyz, hole, begin.index(), i, ball);
+      v = anchor_->core.insert_in_hole_below_dimension_3(xyz, hole, begin.index(), i, ball);
       vertices_added();
-      return Vertex_handle(anchor_.get(), v);
+    } else {
+      v = anchor_->core.insert_in_hole(xyz, hole.data(), hole.size(), ball);
+      after_single_insertion(ball);
     }
-    const Vertex_id v = anchor_->core.insert_in_hole(xyz, hole.data(), hole.size(), ball);
-    after_single_insertion(ball);
+    keep_input(v, p, old_count);
     return Vertex_handle(anchor_.get(), v);
   }
 
@@ -706,8 +721,8 @@ public:
        !anchor_->tds.is_created(newv.index()))
       throw std::invalid_argument("Fast_Delaunay_triangulation_3::insert_in_hole: the vertex is not one of "
                                   "tds().create_vertex() waiting for a cell");
-    const double xyz[3] = {p.x(), p.y(), p.z()};
-    Core::check_finite(xyz, 1);
+    double xyz[3];
+    engine_coordinates(p, xyz);
     std::vector<Tet_id> hole, ball;
     for(; cells_begin != cells_end; ++cells_begin) {
       const Cell_handle c = *cells_begin;
@@ -717,10 +732,11 @@ public:
     if(dimension() == 2) {
       anchor_->core.insert_in_hole_below_dimension_3(xyz, hole, begin.index(), i, ball, newv.index());
       vertices_added();
-      return newv;
+    } else {
+      anchor_->core.insert_in_hole(xyz, hole.data(), hole.size(), ball, newv.index());
+      after_single_insertion(ball);
     }
-    anchor_->core.insert_in_hole(xyz, hole.data(), hole.size(), ball, newv.index());
-    after_single_insertion(ball);
+    anchor_->kernel_points.replace(newv.index(), p);
     return newv;
   }
 
@@ -809,8 +825,10 @@ public:
   // the third iterator each facet between two cells in conflict once.  The
   // test is the insertion's own (CGAL's perturbed in-sphere), so the zone is
   // exactly CGAL's; only the order of the output differs.  The triangulation
-  // is left unchanged (see Conflict_zone.h).  In dimension 2 CGAL's
-  // triangulation answers: triangles, their edges as (c, i).
+  // is left unchanged (see Conflict_zone.h).  A point that is no double
+  // (an exact kernel's construction) is tested with the kernel's predicates
+  // (Kernel_queries.h).  In dimension 2 CGAL's triangulation answers:
+  // triangles, their edges as (c, i).
   template <class OutputIteratorBoundaryFacets, class OutputIteratorCells, class OutputIteratorInternalFacets>
   Triple<OutputIteratorBoundaryFacets, OutputIteratorCells, OutputIteratorInternalFacets>
   find_conflicts(const Point& p, Cell_handle c, OutputIteratorBoundaryFacets bfit, OutputIteratorCells cit,
@@ -828,10 +846,15 @@ public:
       for(const Reference_facet& f : internal) *ifit++ = from_reference(f);
       return make_triple(bfit, cit, ifit);
     }
-    const double q[3] = {p.x(), p.y(), p.z()};
+    double q[3];
+    const bool with_internal = !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value;
     Fast_Delaunay_triangulation_3_internal::Conflict_zone zone;
-    Fast_Delaunay_triangulation_3_internal::find_conflict_zone(
-        anchor_->core.mesh, c.index(), q, !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value, zone);
+    if(exact_coordinates(p, q)) {
+      Core::check_finite(q, 1);
+      Fast_Delaunay_triangulation_3_internal::find_conflict_zone(anchor_->core.mesh, c.index(), q, with_internal, zone);
+    } else {
+      kernel_queries().conflict_zone(c.index(), p, with_internal, zone);
+    }
     for(auto code : zone.boundary) *bfit++ = facet_of_code(code);
     for(Tet_id t : zone.cells) *cit++ = Cell_handle(anchor_.get(), t);
     for(auto code : zone.internal) *ifit++ = facet_of_code(code);
@@ -1046,20 +1069,30 @@ public:
   // infinite vertex.  The cell found may differ from CGAL's when several
   // qualify (a point on a facet, an edge or a vertex); lt never does.  Below
   // dimension 3, CGAL's locate on CGAL's triangulation of the same vertices
-  // answers (Lower_dimensions.h), from the start cell given.
+  // answers (Lower_dimensions.h), from the start cell given; a point that is
+  // no double is located by the kernel's predicates (Kernel_queries.h).
   Cell_handle locate(const Point& p, Locate_type& lt, int& li, int& lj, Cell_handle start = Cell_handle(),
                      bool* could_lock_zone = nullptr) const
   {
     if(could_lock_zone) *could_lock_zone = true;
+    double q[3];
+    if(dimension() < 3 && !exact_coordinates(p, q)) {
+      const Fast_Delaunay_triangulation_3_internal::Location loc = kernel_queries().locate_below_dimension_3(p);
+      lt = static_cast<Locate_type>(loc.type);
+      if(loc.li >= 0) li = loc.li;
+      if(loc.lj >= 0) lj = loc.lj;
+      return loc.cell == Tet_id(-1) ? Cell_handle() : Cell_handle(anchor_.get(), loc.cell);
+    }
     if(dimension() < 3) {
       typename Lower::Locate_type type;
       const Reference_cell c = lower().delaunay().locate(to_reference(p), type, li, lj, to_reference(start));
       lt = static_cast<Locate_type>(type);
       return from_reference(c);
     }
-    const double q[3] = {p.x(), p.y(), p.z()};
+    const Tet_id from = start ? start.index() : Tet_id(-1);
     const Fast_Delaunay_triangulation_3_internal::Location loc =
-        Fast_Delaunay_triangulation_3_internal::locate(anchor_->core.mesh, start ? start.index() : Tet_id(-1), q);
+        exact_coordinates(p, q) ? Fast_Delaunay_triangulation_3_internal::locate(anchor_->core.mesh, from, q)
+                                : kernel_queries().locate(from, p);
     lt = static_cast<Locate_type>(loc.type);
     if(loc.li >= 0) li = loc.li;
     if(loc.lj >= 0) lj = loc.lj;
@@ -1094,9 +1127,21 @@ public:
   Bounded_side side_of_cell(const Point& p, Cell_handle c, Locate_type& lt, int& i, int& j) const
   {
     CGAL_precondition(dimension() == 3);
-    Fast_Delaunay_triangulation_3_internal::Location_type type;
-    const Bounded_side side =
-        Fast_Delaunay_triangulation_3_internal::side_of_cell(anchor_->traits, anchor_->core.mesh, c.index(), p, type, i, j);
+    // lt has a meaning only on the bounded side or the boundary (CGAL's
+    // words); on the unbounded side it says outside.
+    Fast_Delaunay_triangulation_3_internal::Location_type type =
+        Fast_Delaunay_triangulation_3_internal::Location_type::outside_convex_hull;
+    double q[3];
+    Bounded_side side;
+    if(exact_coordinates(p, q)) {
+      const Flat_storage& m = anchor_->core.mesh;
+      side = Fast_Delaunay_triangulation_3_internal::side_of_cell(
+          anchor_->traits, m, c.index(), p,
+          [&](int k) { return Fast_Delaunay_triangulation_3_internal::orientation_with(m, c.index(), k, q); },
+          [this](Vertex_id v) { return point_of(v); }, type, i, j);
+    } else {
+      side = kernel_queries().side_of_cell(c.index(), p, type, i, j);
+    }
     lt = static_cast<Locate_type>(type);
     return side;
   }
@@ -1131,7 +1176,8 @@ public:
   Bounded_side side_of_sphere(Cell_handle c, const Point& p, bool perturb = false) const
   {
     CGAL_precondition(dimension() == 3);
-    const double q[3] = {p.x(), p.y(), p.z()};
+    double q[3];
+    if(!exact_coordinates(p, q)) return static_cast<Bounded_side>(kernel_queries().side_of_sphere(c.index(), p, perturb));
     return static_cast<Bounded_side>(
         Fast_Delaunay_triangulation_3_internal::side_of_sphere(anchor_->core.mesh, c.index(), q, perturb));
   }
@@ -1318,10 +1364,12 @@ public:
       const Point &a = point(c, i0), &b = point(c, i1), &d = point(c, i2);
       CGAL_precondition(anchor_->traits.coplanar_3_object()(a, b, d, p));
       if(!perturb) return anchor_->traits.coplanar_side_of_bounded_circle_3_object()(a, b, d, p);
-      const double pa[3] = {a.x(), a.y(), a.z()}, pb[3] = {b.x(), b.y(), b.z()}, pd[3] = {d.x(), d.y(), d.z()},
-                   q[3] = {p.x(), p.y(), p.z()};
-      return static_cast<Bounded_side>(
-          Fast_Delaunay_triangulation_3_internal::perturbed_coplanar_side_of_bounded_circle(pa, pb, pd, q));
+      double q[3];
+      if(!exact_coordinates(p, q))
+        return static_cast<Bounded_side>(kernel_queries().coplanar_side_of_bounded_circle(a, b, d, p, true));
+      const Flat_storage& m = anchor_->core.mesh;
+      return static_cast<Bounded_side>(Fast_Delaunay_triangulation_3_internal::perturbed_coplanar_side_of_bounded_circle(
+          m.point(c->vertex(i0).index()), m.point(c->vertex(i1).index()), m.point(c->vertex(i2).index()), q));
     }
     // Facet i of a ghost cell: the infinite vertex (slot 3) and the edge (v1, v2).
     const Point v1 = point(c, next_around_edge(3, i)), v2 = point(c, next_around_edge(i, 3));
@@ -1595,6 +1643,7 @@ public:
     anchor_->core.assign(std::move(built), built_dimension);
     anchor_->incident_cells.clear();
     anchor_->tds.forget_created(); // their records are gone with the old arrays
+    anchor_->kernel_points.clear(); // rebuilt from the doubles read
     // The file carries no infos: every vertex and cell starts with Info().
     anchor_->vertex_infos.clear();
     anchor_->user_vertices.clear();
@@ -1683,8 +1732,8 @@ private:
   Vertex_handle move_vertex(Vertex_handle v, const Point& p, bool remove_on_collision, std::vector<Tet_id>& made)
   {
     check_removable(v, remove_on_collision ? "move" : "move_if_no_collision");
-    const double xyz[3] = {p.x(), p.y(), p.z()};
-    Core::check_finite(xyz, 1);
+    double xyz[3];
+    engine_coordinates(p, xyz);
     if(v->point() == p) return v;
     if(!remove_on_collision) {
       // As CGAL, p is located from v's cell: moves are mostly short.
@@ -1697,6 +1746,7 @@ private:
     // removal, which is then all that happens (one walk fewer).
     const Vertex_id moved = anchor_->core.move(v.index(), xyz, removal_start(v), made);
     anchor_->cells_made(made);
+    if(moved == v.index()) anchor_->kernel_points.replace(moved, p);
     return Vertex_handle(anchor_.get(), moved);
   }
 
@@ -1706,10 +1756,12 @@ private:
   {
     ball.clear();
     if(dimension() < 3) return insert_below_dimension_3(p, start, nullptr, Cell_handle(), 0, 0, ball);
-    const double xyz[3] = {p.x(), p.y(), p.z()};
-    Core::check_finite(xyz, 1);
+    double xyz[3];
+    engine_coordinates(p, xyz);
+    const Vertex_id old_count = vertex_count();
     const Vertex_id v = anchor_->core.insert_one_from(xyz, start ? start.index() : Tet_id(-1), ball);
     after_single_insertion(ball);
+    keep_input(v, p, old_count);
     return Vertex_handle(anchor_.get(), v);
   }
   // Every vertex of a deleted cell is a vertex of the ball (a Delaunay
@@ -1734,8 +1786,8 @@ private:
   Vertex_handle insert_below_dimension_3(const Point& p, Cell_handle start, const Locate_type* lt, Cell_handle c,
                                          int li, int lj, std::vector<Tet_id>& around)
   {
-    const double xyz[3] = {p.x(), p.y(), p.z()};
-    Core::check_finite(xyz, 1);
+    double xyz[3];
+    engine_coordinates(p, xyz);
     anchor_->incident_cells.clear();
     anchor_->core.partitions = 1;
     typename Lower::Location where;
@@ -1745,9 +1797,11 @@ private:
       where.li = li;
       where.lj = lj;
     }
+    const Vertex_id old_count = vertex_count();
     const Vertex_id v = anchor_->core.insert_one_below_dimension_3(xyz, start ? start.index() : Tet_id(-1),
                                                            lt ? &where : nullptr, around);
     vertices_added();
+    keep_input(v, p, old_count);
     return Vertex_handle(anchor_.get(), v);
   }
 
@@ -1771,9 +1825,13 @@ private:
   {
     return v == Vertex_handle() ? Reference_vertex() : lower().vertex(v.index());
   }
+  // Below dimension 3 CGAL's triangulation of the vertices' doubles
+  // answers, so a query point must have double coordinates too.
   static typename Lower::Reference_point to_reference(const Point& p)
   {
-    return typename Lower::Reference_point(p.x(), p.y(), p.z());
+    double xyz[3];
+    engine_coordinates(p, xyz);
+    return typename Lower::Reference_point(xyz[0], xyz[1], xyz[2]);
   }
   // Runs `query` with an output iterator of CGAL's elements of type
   // Reference, and writes them to `out` as our handles, in CGAL's order.
@@ -1925,14 +1983,17 @@ private:
 
   // Consumes `xyz`: the core frees it once the vertex records are written,
   // so the copy of the input does not stay resident while the mesh grows.
-  std::ptrdiff_t insert_coordinates(std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input)
+  // `points`: the user's objects of the range, empty when the kernel's FT
+  // is double (then vertex_of_input may be null).
+  std::ptrdiff_t insert_coordinates(std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input,
+                                    const std::vector<Point>* points)
   {
     const std::size_t n = xyz.size() / 3;
     Core::check_finite(xyz.data(), n);
     anchor_->incident_cells.clear();
     anchor_->core.partitions = partitions_for_insertion();
     const std::size_t added = anchor_->core.insert(xyz.data(), n, vertex_of_input, &xyz);
-    vertices_added();
+    anchor_->vertices_added(points->empty() ? nullptr : points, vertex_of_input);
     return static_cast<std::ptrdiff_t>(added);
   }
 
@@ -1951,12 +2012,50 @@ private:
   static void append_coordinates(InputIterator first, InputIterator last, std::vector<double>& xyz,
                                  std::input_iterator_tag)
   {
-    for(; first != last; ++first) {
-      const Point& p = *first;
-      xyz.push_back(p.x());
-      xyz.push_back(p.y());
-      xyz.push_back(p.z());
-    }
+    for(; first != last; ++first) append_coordinates(xyz, *first);
+  }
+  static void append_coordinates(std::vector<double>& xyz, const Point& p)
+  {
+    double c[3];
+    if(!exact_coordinates(p, c)) throw_not_doubles(p, "point #" + std::to_string(xyz.size() / 3) + " of the input");
+    xyz.insert(xyz.end(), c, c + 3);
+  }
+
+  // ---------------------------------------------------------------- kernel points (Kernel_points.h)
+  static constexpr bool keeps_kernel_points = Anchor::keeps_kernel_points;
+  // The doubles of p, if they are exactly its coordinates (always, for a
+  // kernel with double coordinates).
+  static bool exact_coordinates(const Point& p, double* xyz)
+  {
+    return Fast_Delaunay_triangulation_3_internal::exact_coordinates(p, xyz);
+  }
+  // The doubles the engine takes for p: they must be p's coordinates
+  // exactly and finite, else std::invalid_argument.
+  static void engine_coordinates(const Point& p, double* xyz)
+  {
+    if(!exact_coordinates(p, xyz)) throw_not_doubles(p, "the point");
+    Core::check_finite(xyz, 1);
+  }
+  [[noreturn]] static void throw_not_doubles(const Point& p, const std::string& which)
+  {
+    std::ostringstream message;
+    message.precision(17);
+    message << "Fast_Delaunay_triangulation_3: " << which << " (about " << CGAL::to_double(p.x()) << ' '
+            << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z())
+            << ") has coordinates not representable as doubles, which the engine needs here;"
+            << " the triangulation is unchanged";
+    throw std::invalid_argument(message.str());
+  }
+  // After the insertion of p as vertex v: a new vertex (id from old_count
+  // on) keeps the user's object.
+  void keep_input(Vertex_id v, const Point& p, Vertex_id old_count)
+  {
+    if(v >= old_count && v != Fast_Delaunay_triangulation_3_internal::ghost_vertex)
+      anchor_->kernel_points.keep_input(v, p);
+  }
+  Fast_Delaunay_triangulation_3_internal::Kernel_queries<Anchor> kernel_queries() const
+  {
+    return Fast_Delaunay_triangulation_3_internal::Kernel_queries<Anchor>(*anchor_);
   }
 
   static constexpr int edge_vertex[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};

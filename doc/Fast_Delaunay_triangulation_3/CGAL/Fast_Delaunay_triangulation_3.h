@@ -10,7 +10,7 @@ of `Delaunay_triangulation_3` for building a triangulation by insertion and
 reading it.
 
 For any input without NaN or infinite coordinates, its finite cells are
-exactly those of `Delaunay_triangulation_3<Epick>` on the same points, as sets
+exactly those of `Delaunay_triangulation_3<Gt>` on the same points, as sets
 of four points: both evaluate the predicates exactly and both break
 cospherical and coplanar ties with the same symbolic perturbation (the
 lexicographic order of the points), so the triangulation is unique and does
@@ -24,12 +24,27 @@ order sorted along a Moore curve, then a visibility walk, a cavity search and
 a Delaunay ball per point. See the user manual,
 Chapter \ref Chapter_Fast_Delaunay_triangulation_3.
 
-\tparam Gt is the geometric traits class. It supplies the types `Point_3`,
-`Segment_3`, `Triangle_3` and `Tetrahedron_3`, and its number type `FT` must
-be `double` (a `static_assert` checks it); the default is
-`Exact_predicates_inexact_constructions_kernel`. The predicates of the
-triangulation do not come from `Gt`: they are the package's own filtered
-predicates, whose exact stage is `Exact_predicates_inexact_constructions_kernel`'s.
+\tparam Gt is the geometric traits class, a CGAL kernel:
+`Exact_predicates_inexact_constructions_kernel` (the default),
+`Exact_predicates_exact_constructions_kernel`, `Simple_cartesian<double>`, ...
+It supplies the types `Point_3`, `Segment_3`, `Triangle_3` and
+`Tetrahedron_3` and the constructions (`dual()`, `tetrahedron()`, ...).
+Insertion runs on the points' double coordinates with the package's own
+filtered predicates, whose exact stage is
+`Exact_predicates_inexact_constructions_kernel`'s: on points with double
+coordinates they decide exactly what any kernel's exact predicates decide.
+When `FT` is not `double`, the points inserted are kept, one `Point_3` per
+vertex, so `v->point()` is the object inserted (`==` holds, and for EPEC it
+is the same lazy value), and an inserted point must have coordinates that
+are doubles exactly (see the differences below). In dimension 3 a query at a
+point whose coordinates are not doubles (an EPEC circumcenter, a barycenter)
+is answered exactly with `Gt`'s own predicates on the kernel points and the
+same perturbation: `locate()`, `side_of_cell()`, `side_of_sphere()`,
+`side_of_circle()`, `nearest_vertex()`, `is_vertex()`, `find_conflicts()`,
+`vertices_on_conflict_zone_boundary()` and the segment traverser between two
+points. Below dimension 3 `locate()` (so `is_vertex()`) and
+`nearest_vertex()` answer such points exactly too, with the same `lt`, `li`,
+`lj` as CGAL (the cell is none outside the affine hull).
 
 \tparam Tds_ is accepted so that the class can be named with the template
 arguments of `Delaunay_triangulation_3`; the combinatorics always live in
@@ -102,13 +117,27 @@ partitions space instead). Default: `Default`.
   reference into a temporary copy: walk backwards with `--` (CGAL's facet and
   edge iterators store their `Facet` and `Edge` the same way). A
   `Point_iterator` yields points by value.
-- There is no `tds()` and no `Triangulation_data_structure` / `Tds` typedef:
-  the combinatorics are the flat arrays, not a
-  `Triangulation_data_structure_3`.
+- `tds()` returns a view over the flat arrays with the interface of
+  `Triangulation_data_structure_3` (counts, raw iterators, adjacency,
+  `create_vertex()`, combinatorial `is_valid()`, 2-3 and 3-2 flips; see the
+  user manual), not a `Triangulation_data_structure_3`: the members that
+  build or rewire cells one by one (`create_cell`, `set_adjacency`,
+  `copy_tds`, `set_infinite_vertex`) are not provided.
 - Finite vertices are enumerated in the order of the vertex ids, which is the
   insertion order chosen by the spatial sort, not the order of the input.
 - A point with a NaN or infinite coordinate makes `insert()` throw
   `std::invalid_argument` and leaves the triangulation unchanged.
+- With a kernel whose `FT` is not `double` (EPEC), a point whose coordinates
+  are not all doubles exactly (say \f$ x = 1/3 \f$) cannot be inserted, as the
+  engine works on doubles: `insert()` throws `std::invalid_argument` naming
+  the point's position in the input and saying "coordinates not
+  representable as doubles", and the triangulation is unchanged (nothing of
+  a range is inserted). The same holds for `insert_in_hole()`, and below
+  dimension 3 for the queries other than `locate()`, `is_vertex()` and
+  `nearest_vertex()` (CGAL's triangulation of the vertices' doubles answers
+  there).
+  `Delaunay_triangulation_3<Epeck>` accepts such points. A point made by a
+  construction whose value is a double (\f$ (1/3) \cdot 3 \f$) is accepted.
 - At most \f$ 2^{32} - 2 \f$ vertices (`std::length_error` beyond).
 - `v->cell()` builds, on its first call after an insertion, a table of one
   incident cell per vertex (a pass over all cells); `infinite_cell()` scans
@@ -883,7 +912,11 @@ Replaces the triangulation by the one in `is`, in linear time, after checking
 counts, index ranges, symmetric adjacency, connectivity, orientation and the
 Delaunay property. On bad input returns `false`, sets the failbit of `is`,
 writes the reason and its position to `*error` (if not null) and leaves the
-triangulation unchanged. Below dimension 3 only the vertices are kept.
+triangulation unchanged. Below dimension 3 only the vertices are kept. The
+format holds doubles (an exact kernel's `operator<<` writes the double of
+each coordinate), so with a kernel whose `FT` is not `double` each coordinate
+read, a decimal or a quotient, is taken as its nearest double: a file written
+with precision 17 gives back the points written.
 */
 bool read(std::istream& is, std::string* error = nullptr);
 

@@ -34,10 +34,14 @@ namespace Fast_Delaunay_triangulation_3_internal {
 template <class Target_point, class Point>
 Target_point to_target_point(const Point& p)
 {
+  typedef typename std::decay<decltype(p.x())>::type Coordinate;
+  typedef typename std::decay<decltype(std::declval<const Target_point&>().x())>::type Target_coordinate;
   if constexpr(std::is_constructible<Target_point, const Point&>::value)
     return Target_point(p);
-  else
+  else if constexpr(std::is_convertible<Coordinate, Target_coordinate>::value)
     return Target_point(p.x(), p.y(), p.z());
+  else // e.g. EPEC to Epick: our coordinates are doubles exactly
+    return Target_point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
 // The cells of the target, indexed by our cell slot (empty handle for a free

@@ -11,6 +11,8 @@
 #ifndef CGAL_FDT3_INTERNAL_EQUALITY_H
 #define CGAL_FDT3_INTERNAL_EQUALITY_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_points.h>
+
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -28,20 +30,29 @@ namespace Fast_Delaunay_triangulation_3_internal {
 
 typedef std::array<double, 3> Point_tuple;
 
+// Only for vertices whose coordinates are doubles (see sorted_vertex_tuples).
 template <class Point>
 Point_tuple point_tuple(const Point& p)
 {
   return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
 }
 
+// False if a vertex has coordinates that are no doubles: an exact kernel's
+// CGAL triangulation may have one, this package's triangulations never do,
+// so such a triangulation equals none of ours (and rounding it could make
+// two different points one).
 template <class Tr>
-std::vector<Point_tuple> sorted_vertex_tuples(const Tr& tr)
+bool sorted_vertex_tuples(const Tr& tr, std::vector<Point_tuple>& keys)
 {
-  std::vector<Point_tuple> keys;
+  keys.clear();
   keys.reserve(tr.number_of_vertices());
-  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) keys.push_back(point_tuple(v->point()));
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    Point_tuple k;
+    if(!exact_coordinates(v->point(), k.data())) return false;
+    keys.push_back(k);
+  }
   std::sort(keys.begin(), keys.end());
-  return keys;
+  return true;
 }
 
 template <class Tr>
@@ -66,7 +77,8 @@ template <class A, class B>
 bool same_triangulation(const A& a, const B& b)
 {
   if(a.dimension() != b.dimension() || a.number_of_vertices() != b.number_of_vertices()) return false;
-  if(sorted_vertex_tuples(a) != sorted_vertex_tuples(b)) return false;
+  std::vector<Point_tuple> va, vb;
+  if(!sorted_vertex_tuples(a, va) || !sorted_vertex_tuples(b, vb) || va != vb) return false;
   if(a.dimension() < 3) return true;
   if(a.number_of_finite_cells() != b.number_of_finite_cells()) return false;
   return sorted_cell_tuples(a) == sorted_cell_tuples(b);

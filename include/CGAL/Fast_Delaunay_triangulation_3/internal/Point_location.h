@@ -45,18 +45,13 @@ inline Tet_id walk_to(const Flat_storage& m, Tet_id start, const double* p)
   return kernel.walk(start, p);
 }
 
-// Where p is in the closure of finite tetrahedron t: o[i] is the orientation
-// of t with p in place of vertex i, none negative.  p on facet i <=> o[i] = 0.
-inline Location classify_in_cell(const Flat_storage& m, Tet_id t, const double* p)
+// Where p is in the closure of finite tetrahedron t, from o[i], the
+// orientation of t with p in place of vertex i, none negative: p is on
+// facet i <=> o[i] = 0.
+inline Location location_from_orientations(Tet_id t, const int* o)
 {
-  const double* w[4] = {m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)), m.point(m.vertex(t, 2)),
-                        m.point(m.vertex(t, 3))};
-  int o[4];
   int on = 0;
   for(int i = 0; i < 4; ++i) {
-    const double* q[4] = {w[0], w[1], w[2], w[3]};
-    q[i] = p;
-    o[i] = orientation(q[0], q[1], q[2], q[3]);
     CGAL_assertion(o[i] >= 0);
     on += o[i] == 0 ? 1 : 0;
   }
@@ -81,20 +76,39 @@ inline Location classify_in_cell(const Flat_storage& m, Tet_id t, const double* 
   return loc;
 }
 
+// o[i]: the exact orientation of t with p in place of vertex i (for a ghost
+// cell, i = 3: p against its hull facet).
+inline int orientation_with(const Flat_storage& m, Tet_id t, int i, const double* p)
+{
+  const double* q[4] = {m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)), m.point(m.vertex(t, 2)),
+                        i == 3 ? p : m.point(m.vertex(t, 3))};
+  q[i] = p;
+  return orientation(q[0], q[1], q[2], q[3]);
+}
+
+inline Location classify_in_cell(const Flat_storage& m, Tet_id t, const double* p)
+{
+  int o[4];
+  for(int i = 0; i < 4; ++i) o[i] = orientation_with(m, t, i, p);
+  return location_from_orientations(t, o);
+}
+
 // CGAL's semantics in dimension 3: a point on the hull boundary is located in
 // a finite cell; a point outside is located in the ghost cell of a hull facet
 // that sees it strictly, li being its infinite vertex.
+inline Location outside_hull(Tet_id ghost)
+{
+  Location loc;
+  loc.cell = ghost;
+  loc.type = Location_type::outside_convex_hull;
+  loc.li = 3;
+  return loc;
+}
+
 inline Location locate(const Flat_storage& m, Tet_id start, const double* p)
 {
   const Tet_id t = walk_to(m, start, p);
-  if(m.is_ghost(t)) {
-    Location loc;
-    loc.cell = t;
-    loc.type = Location_type::outside_convex_hull;
-    loc.li = 3;
-    return loc;
-  }
-  return classify_in_cell(m, t, p);
+  return m.is_ghost(t) ? outside_hull(t) : classify_in_cell(m, t, p);
 }
 
 // Position of p, coplanar with the non-degenerate triangle (a, b, c), with
@@ -131,35 +145,31 @@ Bounded_side side_of_triangle(const Gt& gt, const typename Gt::Point_3& p, const
 
 // CGAL's side_of_cell: for a ghost cell, "inside" is the open half-space
 // beyond its hull facet and "boundary" the closed hull facet.
-template <class Gt>
+// `orientation_with(k)` is the orientation of t with p in place of vertex k
+// (the doubles' predicates for a point with double coordinates, the
+// kernel's otherwise); `point(v)` the kernel point of vertex v.
+template <class Gt, class Orientation_with, class Point_of>
 Bounded_side side_of_cell(const Gt& gt, const Flat_storage& m, Tet_id t, const typename Gt::Point_3& p,
-                          Location_type& lt, int& i, int& j)
+                          const Orientation_with& orientation_with, const Point_of& point, Location_type& lt,
+                          int& i, int& j)
 {
-  typedef typename Gt::Point_3 Point;
-  auto point = [&m](Vertex_id v) {
-    const double* x = m.point(v);
-    return Point(x[0], x[1], x[2]);
-  };
-  const double q[3] = {p.x(), p.y(), p.z()};
   if(!m.is_ghost(t)) {
-    const double* w[4] = {m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)), m.point(m.vertex(t, 2)),
-                          m.point(m.vertex(t, 3))};
+    int o[4];
     for(int k = 0; k < 4; ++k) {
-      const double* x[4] = {w[0], w[1], w[2], w[3]};
-      x[k] = q;
-      if(orientation(x[0], x[1], x[2], x[3]) < 0) {
+      o[k] = orientation_with(k);
+      if(o[k] < 0) {
         lt = Location_type::outside_convex_hull;
         return ON_UNBOUNDED_SIDE;
       }
     }
-    const Location loc = classify_in_cell(m, t, q);
+    const Location loc = location_from_orientations(t, o);
     lt = loc.type;
     // side_of_tetrahedron numbers an edge by its smallest and largest free index.
     i = loc.li;
     j = loc.lj;
     return lt == Location_type::cell ? ON_BOUNDED_SIDE : ON_BOUNDARY;
   }
-  const int o = orientation(m.point(m.vertex(t, 0)), m.point(m.vertex(t, 1)), m.point(m.vertex(t, 2)), q);
+  const int o = orientation_with(3);
   if(o > 0) {
     lt = Location_type::cell;
     return ON_BOUNDED_SIDE;

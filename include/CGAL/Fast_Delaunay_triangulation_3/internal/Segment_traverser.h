@@ -43,6 +43,8 @@
 #ifndef CGAL_FDT3_INTERNAL_SEGMENT_TRAVERSER_H
 #define CGAL_FDT3_INTERNAL_SEGMENT_TRAVERSER_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_points.h>
+
 #include <CGAL/Exact_rational.h>
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
@@ -51,6 +53,8 @@
 #include <cstddef>
 #include <iterator>
 #include <memory>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -176,9 +180,29 @@ private:
     Exact at(int k, const Exact& t) const { return at_p[k] + t * (at_q[k] - at_p[k]); }
   };
 
+  // The walk's arithmetic is exact: a point of an exact kernel whose
+  // coordinates are not doubles enters with its exact coordinates.
   static Exact_point exact(const Point& p)
   {
-    return {Exact(CGAL::to_double(p.x())), Exact(CGAL::to_double(p.y())), Exact(CGAL::to_double(p.z()))};
+    double xyz[3];
+    if(exact_coordinates(p, xyz)) return {Exact(xyz[0]), Exact(xyz[1]), Exact(xyz[2])};
+    if constexpr(Is_lazy<Point>::value) {
+      return exact_point_of(p.exact());
+    } else {
+      return exact_point_of(p);
+    }
+  }
+  template <class Exact_kernel_point>
+  static Exact_point exact_point_of(const Exact_kernel_point& p)
+  {
+    typedef typename std::decay<decltype(p.x())>::type Coordinate;
+    if constexpr(std::is_constructible<Exact, const Coordinate&>::value) {
+      return {Exact(p.x()), Exact(p.y()), Exact(p.z())};
+    } else {
+      throw std::invalid_argument(
+          "Fast_Delaunay_triangulation_3: segment traversal from or to a point whose coordinates are neither doubles"
+          " nor of CGAL's exact rational type");
+    }
   }
 
   static Exact determinant(const std::array<Exact_point, 4>& v)

@@ -18,6 +18,7 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_tds.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_points.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/User_bases.h>
@@ -25,6 +26,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -42,13 +44,18 @@ public:
   typedef typename Tr::Vertex Vertex;
   typedef typename Tr::Cell Cell;
 
+  // The kernel's points are kept per vertex when its FT is not double
+  // (Kernel_points.h); otherwise they are the vertex records.
+  static constexpr bool keeps_kernel_points = !std::is_same<typename Geom_traits::FT, double>::value;
+
   explicit Storage_anchor(const Geom_traits& gt) : traits(gt), tds(this) {}
   // User vertex records know the anchor they belong to: a copy's records
   // must name the copy.
   Storage_anchor(const Storage_anchor& other)
       : traits(other.traits), core(other.core), incident_cells(other.incident_cells),
-        vertex_infos(other.vertex_infos), cell_infos(other.cell_infos), user_vertices(other.user_vertices),
-        user_cells(other.user_cells), tds(this, other.tds), dimension_seen_(other.dimension_seen_),
+        kernel_points(other.kernel_points), vertex_infos(other.vertex_infos), cell_infos(other.cell_infos),
+        user_vertices(other.user_vertices), user_cells(other.user_cells), tds(this, other.tds),
+        dimension_seen_(other.dimension_seen_),
         vertices_seen_(other.vertices_seen_)
   {
     user_vertices.attach(this);
@@ -59,6 +66,7 @@ public:
   {
     core.clear();
     incident_cells.clear();
+    kernel_points.clear();
     vertex_infos.clear();
     cell_infos.clear();
     user_vertices.clear();
@@ -72,6 +80,7 @@ public:
   Triangulation_core core;
   mutable std::vector<Tet_id> incident_cells; // lazily built v->cell() cache (dimension 3)
   mutable std::size_t walks_without_incident_cells = 0; // removals that located their vertex instead
+  Kernel_points<Point, keeps_kernel_points> kernel_points;
   Vertex_infos<Vertex_info> vertex_infos;
   Cell_infos<Cell_info> cell_infos;
   User_vertices<typename Tr::User_vertex_record> user_vertices;
@@ -83,9 +92,13 @@ public:
   // do the triangles that one new vertex lifts to tetrahedra.  (When several
   // new vertices lift the dimension, which cells CGAL keeps depends on its
   // insertion order: all get Info().)
-  void vertices_added()
+  // `inserted`, `vertex_of_input`: the user's points of a range and their
+  // vertices, kept as the new vertices' kernel points (Kernel_points.h).
+  void vertices_added(const std::vector<Point>* inserted = nullptr,
+                      const std::vector<Vertex_id>* vertex_of_input = nullptr)
   {
     const std::size_t n = core.vertex_slots();
+    kernel_points.resize(core.mesh, inserted, vertex_of_input);
     vertex_infos.resize(n);
     user_vertices.resize(this, n);
     if(core.lower.active()) {
@@ -132,9 +145,13 @@ public:
   int dimension() const { return core.dimension; }
   Point point_of(Vertex_id v) const
   {
-    if(v == ghost_vertex) return Point(0, 0, 0);
-    const double* p = core.mesh.point(v);
-    return Point(p[0], p[1], p[2]);
+    if constexpr(keeps_kernel_points) {
+      return kernel_points.at(v);
+    } else {
+      if(v == ghost_vertex) return Point(0, 0, 0);
+      const double* p = core.mesh.point(v);
+      return Point(p[0], p[1], p[2]);
+    }
   }
   template <class Info = Vertex_info>
   Info& vertex_info(Vertex_id v) const { return vertex_infos.at(v); }

@@ -32,6 +32,7 @@
 #define CGAL_FDT3_INTERNAL_TRIANGULATION_IO_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_points.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Triangulation_core.h>
 
@@ -178,7 +179,11 @@ private:
     for(std::size_t v = 0; v < n; ++v) {
       Point p;
       if(!(is_ >> p)) return fail("the stream ends or is unreadable at point " + std::to_string(v + 1));
-      const Vertex_record r = {{p.x(), p.y(), p.z()}, 0};
+      // The format writes doubles (an exact kernel's operator<< writes the
+      // double of each coordinate); a coordinate read as a decimal or a
+      // quotient is taken as its nearest double.
+      Vertex_record r = {{0, 0, 0}, 0};
+      nearest_coordinates(p, r.xyz);
       if(!std::isfinite(r.xyz[0]) || !std::isfinite(r.xyz[1]) || !std::isfinite(r.xyz[2]))
         return fail("point " + std::to_string(v + 1) + " has a non-finite coordinate");
       mesh.vertices.push_back(r);

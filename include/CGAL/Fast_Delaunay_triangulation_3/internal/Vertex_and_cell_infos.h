@@ -224,25 +224,19 @@ const A& point_part(const std::tuple<A, B>& v) { return std::get<0>(v); }
 template <class A, class B>
 const B& info_part(const std::tuple<A, B>& v) { return std::get<1>(v); }
 
-// Copies the points of a range of (point, info) elements as x, y, z triples
-// and their infos, in input order.  Single-pass iterators are read once.
-template <class Info, class InputIterator>
-void read_points_and_infos(InputIterator first, InputIterator last, std::vector<double>& xyz,
-                           std::vector<Info>& infos)
+// Hands the points of a range of (point, info) elements to add_point and
+// keeps their infos, in input order.  Single-pass iterators are read once.
+template <class Info, class InputIterator, class Add_point>
+void read_points_and_infos(InputIterator first, InputIterator last, std::vector<Info>& infos,
+                           const Add_point& add_point)
 {
   if(std::is_base_of<std::forward_iterator_tag,
-                      typename std::iterator_traits<InputIterator>::iterator_category>::value) {
-    const std::size_t n = static_cast<std::size_t>(std::distance(first, last));
-    xyz.reserve(3 * n);
-    infos.reserve(n);
-  }
+                      typename std::iterator_traits<InputIterator>::iterator_category>::value)
+    infos.reserve(static_cast<std::size_t>(std::distance(first, last)));
   for(; first != last; ++first) {
     // By value: transform and zip iterators yield temporaries.
     const auto value = *first;
-    const auto& p = point_part(value);
-    xyz.push_back(p.x());
-    xyz.push_back(p.y());
-    xyz.push_back(p.z());
+    add_point(point_part(value));
     infos.push_back(info_part(value));
   }
 }
