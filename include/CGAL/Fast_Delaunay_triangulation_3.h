@@ -690,11 +690,8 @@ public:
     CGAL_precondition(begin != Cell_handle() && i >= 0 && i <= dimension());
     double xyz[3];
     engine_coordinates(p, xyz);
-    std::vector<Tet_id> hole, ball;
-    for(; cells_begin != cells_end; ++cells_begin) {
-      const Cell_handle c = *cells_begin;
-      hole.push_back(c.index());
-    }
+    const std::vector<Tet_id> hole = cell_ids(cells_begin, cells_end);
+    std::vector<Tet_id> ball;
     const Vertex_id old_count = vertex_count();
     Vertex_id v;
     if(dimension() == 2) {
@@ -723,11 +720,8 @@ public:
                                   "tds().create_vertex() waiting for a cell");
     double xyz[3];
     engine_coordinates(p, xyz);
-    std::vector<Tet_id> hole, ball;
-    for(; cells_begin != cells_end; ++cells_begin) {
-      const Cell_handle c = *cells_begin;
-      hole.push_back(c.index());
-    }
+    const std::vector<Tet_id> hole = cell_ids(cells_begin, cells_end);
+    std::vector<Tet_id> ball;
     anchor_->tds.placed(newv.index());
     if(dimension() == 2) {
       anchor_->core.insert_in_hole_below_dimension_3(xyz, hole, begin.index(), i, ball, newv.index());
@@ -1748,6 +1742,19 @@ private:
     anchor_->cells_made(made);
     if(moved == v.index()) anchor_->kernel_points.replace(moved, p);
     return Vertex_handle(anchor_.get(), moved);
+  }
+
+  // The slots of the cells of a range of Cell_handles (or of iterators
+  // that convert to them).
+  template <class CellIt>
+  static std::vector<Tet_id> cell_ids(CellIt first, CellIt last)
+  {
+    std::vector<Tet_id> ids;
+    for(; first != last; ++first) {
+      const Cell_handle c = *first;
+      ids.push_back(c.index());
+    }
+    return ids;
   }
 
   // Dimension 3: the kernel's insertion from `start`; below, CGAL's from
