@@ -623,8 +623,8 @@ public:
   // std::invalid_argument, the triangulation unchanged.
   Vertex_handle insert_outside_affine_hull(const Point& p)
   {
-    const double xyz[3] = {p.x(), p.y(), p.z()};
-    Core::check_finite(xyz, 1);
+    double xyz[3];
+    engine_coordinates(p, xyz);
     if(dimension() == 3)
       throw std::invalid_argument("Fast_Delaunay_triangulation_3::insert_outside_affine_hull: dimension 3, "
                                   "every point is in the affine hull");
