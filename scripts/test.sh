@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh clone: installs what is missing, then
-#   1. Release build of everything (tests, examples, benchmarks, tools) in build/, all tests;
+#   1. Release build of everything (tests, examples, benchmarks, tools, the Python module) in build/, all tests
+#      (GoogleTest programs and the pytest suite python/tests);
 #   2. ASan + UBSan build of the tests in build-asan/, all tests;
 #   3. ThreadSanitizer build of the parallel tests (program test_parallel) in build-tsan/;
 #   4. the kernel's tests built without -march=native (the scalar paths of a plain Release build) in build-portable/;
@@ -43,7 +44,7 @@ asan_ubsan_build() {
 
 tsan_build() {
   cmake -S . -B build-tsan "${sanitizer_flags[@]}" -DFDT3_SANITIZE=thread \
-        -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF -DFDT3_BUILD_TOOLS=OFF &&
+        -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF -DFDT3_BUILD_TOOLS=OFF -DFDT3_BUILD_PYTHON=OFF &&
     "${sanitizer_runner[@]}" cmake --build build-tsan -j"$jobs" --target test_parallel &&
     "${sanitizer_runner[@]}" ctest --test-dir build-tsan -L parallel --output-on-failure -j"$jobs"
 }
@@ -55,7 +56,7 @@ kernel_tests="test_predicates;test_agreement_with_cgal;test_degenerate_inputs;te
 # Without -march=native: the scalar predicates and sorts that a user's plain Release build compiles.
 portable_build() {
   cmake -S . -B build-portable -DCMAKE_BUILD_TYPE=Release -DFDT3_NATIVE=OFF -DFDT3_TEST_FILES="$kernel_tests" \
-        -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF -DFDT3_BUILD_TOOLS=OFF &&
+        -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF -DFDT3_BUILD_TOOLS=OFF -DFDT3_BUILD_PYTHON=OFF &&
     cmake --build build-portable -j"$jobs" &&
     ctest --test-dir build-portable --output-on-failure -j"$jobs"
 }

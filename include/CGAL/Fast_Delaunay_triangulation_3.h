@@ -572,6 +572,28 @@ public:
     }
   }
 
+  // Not in CGAL: inserts the points of [first, last) as insert(first, last)
+  // does and writes to `vertices`, in input order, the handle of each point's
+  // vertex (for a duplicate, that of the vertex equal to it, older or new).
+  // Callers holding points in arrays (the Python module, index-array
+  // exports) get from it their input-to-vertex map without a search.
+  template <class InputIterator, class OutputIterator>
+  OutputIterator insert_and_give_vertices(InputIterator first, InputIterator last, OutputIterator vertices)
+  {
+    std::vector<Point> points;
+    std::vector<double> xyz;
+    if constexpr(keeps_kernel_points) {
+      points.assign(first, last);
+      append_coordinates(points.begin(), points.end(), xyz, std::forward_iterator_tag());
+    } else {
+      append_coordinates(first, last, xyz, typename std::iterator_traits<InputIterator>::iterator_category());
+    }
+    std::vector<Vertex_id> vertex_of_input;
+    insert_coordinates(xyz, &vertex_of_input, &points);
+    for(Vertex_id v : vertex_of_input) *vertices++ = Vertex_handle(anchor_.get(), v);
+    return vertices;
+  }
+
   Vertex_handle insert(const Point& p)
   {
     double xyz[3];

@@ -331,4 +331,41 @@ TEST(HintedInsertion, VertexCellsStayRightAcrossHintedInsertions)
   EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
 }
 
+// insert_and_give_vertices (not in CGAL) gives, in input order, the vertex at
+// each point: a new vertex, an older one, or for a duplicate within the range
+// the vertex of its first copy; the triangulation is CGAL's of all points, in
+// every dimension the points span.
+TEST(BulkInsertion, GivesTheVertexOfEveryInputPoint)
+{
+  for(const std::string name : {"uniform", "grid", "coplanar", "collinear"}) {
+    const bool flat = name == "coplanar" || name == "collinear";
+    std::vector<Point> points = to_points<Point>(make_points(flat ? "uniform" : name, 200, 47));
+    for(Point& p : points)
+      if(flat) p = Point(p.x(), name == "coplanar" ? p.y() : 2 * p.x(), 0);
+    Fast_dt fast(points.begin(), points.begin() + 50);
+    for(std::size_t i = 0; i < 40; ++i) points.push_back(points[5 * i]);
+    std::vector<Fast_dt::Vertex_handle> vertices;
+    fast.insert_and_give_vertices(points.begin() + 50, points.end(), std::back_inserter(vertices));
+    ASSERT_EQ(vertices.size(), points.size() - 50) << name;
+    for(std::size_t i = 0; i < vertices.size(); ++i)
+      ASSERT_EQ(vertices[i]->point(), points[50 + i]) << name << " point " << 50 + i;
+    for(std::size_t i = 10; i < 40; ++i) {
+      EXPECT_EQ(vertices[200 - 50 + i], vertices[5 * i - 50]) << name << " duplicate " << i;
+    }
+    const Cgal_dt cgal(points.begin(), points.end());
+    ASSERT_TRUE(fast.is_valid()) << name;
+    EXPECT_EQ(fast.number_of_vertices(), cgal.number_of_vertices()) << name;
+    EXPECT_EQ(fast.dimension(), cgal.dimension()) << name;
+    if(cgal.dimension() == 3) {
+      EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal)) << name;
+    }
+  }
+  Fast_dt fast;
+  const Point bad[] = {Point(0, 0, 0), Point(std::numeric_limits<double>::quiet_NaN(), 0, 0)};
+  std::vector<Fast_dt::Vertex_handle> none;
+  EXPECT_THROW(fast.insert_and_give_vertices(bad, bad + 2, std::back_inserter(none)), std::invalid_argument);
+  EXPECT_EQ(fast.number_of_vertices(), 0u);
+  EXPECT_TRUE(none.empty());
+}
+
 } // namespace test_conflicts_and_insertion

@@ -1,0 +1,596 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Python module fast_delaunay_3 (compiled part, `_core`): numpy arrays in,
+// index arrays out.  Points are rows of the caller's arrays; a vertex is
+// named by the row of the first input point at its position (later equal
+// rows are its duplicates), so the tetrahedra index the caller's own array,
+// as scipy.spatial.Delaunay's simplices do.
+//
+// The work runs with the GIL released; the arrays handed back are allocated
+// once and filled in place (one copy of the tetrahedra, from the flat arrays
+// into numpy's).  C++ exceptions become Python's: std::invalid_argument
+// (NaN, bad index, bad surface) -> ValueError.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Fast_Delaunay_triangulation_3.h>
+#ifdef FDT3_PYTHON_WITH_MESHER
+#include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace fast_delaunay_3_python {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Fast_Delaunay_triangulation_3<Kernel> Delaunay;
+typedef Delaunay::Point Point;
+typedef Delaunay::Vertex_handle Vertex_handle;
+typedef Delaunay::Cell_handle Cell_handle;
+
+// A row of the caller's arrays (or of all the arrays inserted so far).
+typedef std::int64_t Row;
+constexpr Row no_row = -1;
+
+typedef py::array_t<double, py::array::c_style | py::array::forcecast> Double_array;
+
+// ---------------------------------------------------------------- input checks
+
+// The (n, 3) float64 C-ordered array of `points`: other dtypes and strides
+// are converted here, once.
+Double_array point_rows(const py::handle& points, const char* what)
+{
+  Double_array rows = Double_array::ensure(points);
+  if(!rows) throw py::type_error(std::string(what) + " must be an array of numbers");
+  if(rows.ndim() != 2 || rows.shape(1) != 3) {
+    std::ostringstream message;
+    message << what << " must be an (n, 3) array, got shape (";
+    for(py::ssize_t k = 0; k < rows.ndim(); ++k) message << (k ? ", " : "") << rows.shape(k);
+    message << (rows.ndim() == 1 ? ",)" : ")");
+    throw py::value_error(message.str());
+  }
+  const double* xyz = rows.data();
+  for(py::ssize_t i = 0; i < 3 * rows.shape(0); ++i)
+    if(!std::isfinite(xyz[i]))
+      throw py::value_error(std::string(what) + ": row " + std::to_string(i / 3) + " has a " +
+                            (std::isnan(xyz[i]) ? "NaN" : "infinite") + " coordinate");
+  return rows;
+}
+
+std::vector<Point> to_points(const Double_array& rows)
+{
+  const double* xyz = rows.data();
+  std::vector<Point> points;
+  points.reserve(static_cast<std::size_t>(rows.shape(0)));
+  for(py::ssize_t i = 0; i < rows.shape(0); ++i) points.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  return points;
+}
+
+// None: every hardware thread; else at least 1.
+int thread_count(const py::object& threads)
+{
+  if(threads.is_none()) return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const long k = threads.cast<long>();
+  if(k < 1 || k > 255) throw py::value_error("threads must be between 1 and 255, got " + std::to_string(k));
+  return static_cast<int>(k);
+}
+
+// Vertex indices fit int32 below 2^31 rows, uint32 below 2^32.
+py::array index_array(std::size_t rows, std::size_t columns, Row largest)
+{
+  const std::vector<py::ssize_t> shape = {static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(columns)};
+  if(largest <= std::numeric_limits<std::int32_t>::max()) return py::array_t<std::int32_t>(shape);
+  if(largest <= std::numeric_limits<std::uint32_t>::max()) return py::array_t<std::uint32_t>(shape);
+  return py::array_t<std::int64_t>(shape);
+}
+
+template <class F>
+void fill_index_array(py::array& a, F value_at)
+{
+  const std::size_t n = static_cast<std::size_t>(a.size());
+  if(py::isinstance<py::array_t<std::int32_t>>(a)) {
+    auto* out = static_cast<std::int32_t*>(a.mutable_data());
+    for(std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::int32_t>(value_at(i));
+  } else if(py::isinstance<py::array_t<std::uint32_t>>(a)) {
+    auto* out = static_cast<std::uint32_t*>(a.mutable_data());
+    for(std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint32_t>(value_at(i));
+  } else {
+    auto* out = static_cast<std::int64_t*>(a.mutable_data());
+    for(std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::int64_t>(value_at(i));
+  }
+}
+
+// ---------------------------------------------------------------- the triangulation of rows
+
+// A Fast_Delaunay_triangulation_3 whose vertices are named by rows.
+class Row_triangulation
+{
+public:
+  explicit Row_triangulation(int threads) { set_threads(threads); }
+
+  int threads() const { return threads_; }
+  void set_threads(int k)
+  {
+    threads_ = k;
+    delaunay_.set_number_of_threads(k);
+  }
+
+  const Delaunay& delaunay() const { return delaunay_; }
+  std::size_t number_of_rows() const { return rows_.size() / 3; }
+  const std::vector<double>& rows() const { return rows_; }
+
+  // Appends the rows and inserts them; returns for each the row naming its
+  // vertex (itself, or an earlier equal row).  Checked before anything changes.
+  py::array_t<Row> insert(const py::handle& points)
+  {
+    const Double_array input = point_rows(points, "points");
+    const std::size_t n = static_cast<std::size_t>(input.shape(0));
+    py::array_t<Row> named(static_cast<py::ssize_t>(n));
+    Row* out = named.mutable_data();
+    {
+      py::gil_scoped_release unlocked;
+      const std::vector<Point> points_in = to_points(input);
+      std::vector<Vertex_handle> vertices;
+      vertices.reserve(n);
+      delaunay_.insert_and_give_vertices(points_in.begin(), points_in.end(), std::back_inserter(vertices));
+      const Row first = static_cast<Row>(number_of_rows());
+      rows_.insert(rows_.end(), input.data(), input.data() + 3 * n);
+      vertex_of_row_.resize(rows_.size() / 3);
+      for(std::size_t i = 0; i < n; ++i) out[i] = name(vertices[i], first + static_cast<Row>(i));
+    }
+    changed();
+    return named;
+  }
+
+  void remove(const py::handle& indices)
+  {
+    const std::vector<Row> rows = checked_vertex_rows(indices, "remove");
+    {
+      py::gil_scoped_release unlocked;
+      for(Row r : rows) {
+        const Vertex_handle v = vertex_of_row_[r];
+        delaunay_.remove(v);
+        forget(v, r);
+      }
+    }
+    changed();
+  }
+
+  // Moves the vertices of `indices` to `points`; returns for each the row
+  // naming its vertex afterwards: its own, or, when it landed on another
+  // vertex (which then stays and it goes, as in CGAL's move), that vertex's.
+  py::array_t<Row> move(const py::handle& indices, const py::handle& points)
+  {
+    const std::vector<Row> rows = checked_vertex_rows(indices, "move");
+    const Double_array targets = point_rows(points, "points");
+    if(static_cast<std::size_t>(targets.shape(0)) != rows.size())
+      throw py::value_error("move: " + std::to_string(rows.size()) + " indices but " +
+                            std::to_string(targets.shape(0)) + " points");
+    py::array_t<Row> named(static_cast<py::ssize_t>(rows.size()));
+    Row* out = named.mutable_data();
+    const double* xyz = targets.data();
+    {
+      py::gil_scoped_release unlocked;
+      for(std::size_t k = 0; k < rows.size(); ++k) {
+        const Row r = rows[k];
+        const Vertex_handle v = vertex_of_row_[r];
+        const Vertex_handle w = delaunay_.move(v, Point(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]));
+        if(w == v) {
+          std::copy(xyz + 3 * k, xyz + 3 * k + 3, rows_.begin() + 3 * r);
+          out[k] = r;
+          continue;
+        }
+        const Row w_row = row_of(w);
+        forget(v, r);
+        if(w_row != no_row) {
+          out[k] = w_row; // landed on another vertex: r is gone
+        } else {
+          std::copy(xyz + 3 * k, xyz + 3 * k + 3, rows_.begin() + 3 * r);
+          out[k] = name(w, r);
+        }
+      }
+    }
+    changed();
+    return named;
+  }
+
+  // The rows of the vertices, increasing.
+  py::array_t<Row> vertex_rows() const
+  {
+    std::vector<Row> rows;
+    rows.reserve(delaunay_.number_of_vertices());
+    for(std::size_t r = 0; r < vertex_of_row_.size(); ++r)
+      if(vertex_of_row_[r] != Vertex_handle()) rows.push_back(static_cast<Row>(r));
+    return py::array_t<Row>(static_cast<py::ssize_t>(rows.size()), rows.data());
+  }
+
+  // (tets, neighbors): the finite cells as rows, positively oriented;
+  // neighbors[c][i] is the finite cell across the facet opposite vertex i, -1
+  // on the convex hull.  Empty below dimension 3.
+  py::tuple finite_cells() const
+  {
+    const Cell_numbering& numbering = cell_numbering();
+    const std::size_t m = numbering.cells.size();
+    py::array tets = index_array(m, 4, static_cast<Row>(number_of_rows()) - 1);
+    py::array neighbors = index_array(m, 4, static_cast<Row>(m));
+    {
+      py::gil_scoped_release unlocked;
+      fill_index_array(tets, [&](std::size_t k) { return row_of(numbering.cells[k / 4]->vertex(int(k % 4))); });
+      fill_index_array(neighbors, [&](std::size_t k) {
+        return numbering.number_of(numbering.cells[k / 4]->neighbor(int(k % 4)));
+      });
+    }
+    return py::make_tuple(tets, neighbors);
+  }
+
+  // The facets of the convex hull as rows, counterclockwise seen from
+  // outside (their normals point out).  Empty below dimension 3.
+  py::array hull_facets() const
+  {
+    std::vector<std::array<Row, 3>> facets;
+    if(delaunay_.dimension() == 3) {
+      const Vertex_handle infinite = delaunay_.infinite_vertex();
+      for(Cell_handle c : delaunay_.all_cell_handles()) {
+        int i;
+        if(!c->has_vertex(infinite, i)) continue;
+        // An infinite cell is positively oriented with its infinite vertex
+        // outside the hull: its other three are counterclockwise seen from
+        // there in CGAL's facet order.
+        std::array<Row, 3> f;
+        for(int k = 0; k < 3; ++k) f[k] = row_of(c->vertex(Delaunay::vertex_triple_index(i, k)));
+        facets.push_back(f);
+      }
+    }
+    py::array out = index_array(facets.size(), 3, static_cast<Row>(number_of_rows()) - 1);
+    fill_index_array(out, [&](std::size_t k) { return facets[k / 3][k % 3]; });
+    return out;
+  }
+
+  // The circumcentres of the finite cells, in finite_cells() order.
+  py::array_t<double> circumcenters() const
+  {
+    const Cell_numbering& numbering = cell_numbering();
+    py::array_t<double> out({static_cast<py::ssize_t>(numbering.cells.size()), py::ssize_t(3)});
+    double* xyz = out.mutable_data();
+    {
+      py::gil_scoped_release unlocked;
+      for(std::size_t k = 0; k < numbering.cells.size(); ++k) {
+        const Point c = delaunay_.dual(numbering.cells[k]);
+        xyz[3 * k] = c.x();
+        xyz[3 * k + 1] = c.y();
+        xyz[3 * k + 2] = c.z();
+      }
+    }
+    return out;
+  }
+
+  // For each query, the finite cell (finite_cells() order) that contains it,
+  // -1 outside the convex hull; a query on a shared face gets one of the cells.
+  py::array_t<std::int64_t> locate(const py::handle& queries) const
+  {
+    const Double_array q = point_rows(queries, "queries");
+    const Cell_numbering& numbering = cell_numbering();
+    py::array_t<std::int64_t> out(q.shape(0));
+    std::int64_t* cell = out.mutable_data();
+    {
+      py::gil_scoped_release unlocked;
+      const double* xyz = q.data();
+      Cell_handle hint;
+      for(py::ssize_t i = 0; i < q.shape(0); ++i) {
+        hint = delaunay_.locate(Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), hint);
+        cell[i] = delaunay_.dimension() == 3 ? numbering.number_of(hint) : -1;
+      }
+    }
+    return out;
+  }
+
+  // For each query, the row of the nearest vertex.
+  py::array_t<Row> nearest_vertex(const py::handle& queries) const
+  {
+    const Double_array q = point_rows(queries, "queries");
+    if(delaunay_.number_of_vertices() == 0) throw py::value_error("nearest_vertex: the triangulation has no vertex");
+    py::array_t<Row> out(q.shape(0));
+    Row* row = out.mutable_data();
+    {
+      py::gil_scoped_release unlocked;
+      const double* xyz = q.data();
+      Vertex_handle hint;
+      for(py::ssize_t i = 0; i < q.shape(0); ++i) {
+        hint = delaunay_.nearest_vertex(Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]),
+                                        hint == Vertex_handle() ? Cell_handle() : hint->cell());
+        row[i] = row_of(hint);
+      }
+    }
+    return out;
+  }
+
+  // Pickled state: every row, the rows of the vertices, the thread count.
+  py::tuple state() const
+  {
+    py::array_t<double> rows({static_cast<py::ssize_t>(number_of_rows()), py::ssize_t(3)});
+    std::copy(rows_.begin(), rows_.end(), rows.mutable_data());
+    return py::make_tuple(rows, vertex_rows(), threads_);
+  }
+
+  static Row_triangulation from_state(const py::tuple& state)
+  {
+    if(state.size() != 3) throw py::value_error("Triangulation: not a pickled state");
+    Row_triangulation t(state[2].cast<int>());
+    const Double_array rows = point_rows(state[0], "pickled rows");
+    const auto vertices = py::array_t<Row, py::array::c_style | py::array::forcecast>::ensure(state[1]);
+    if(!vertices || vertices.ndim() != 1) throw py::value_error("Triangulation: not a pickled state (vertex rows)");
+    const std::size_t n = static_cast<std::size_t>(rows.shape(0));
+    std::vector<Point> points;
+    for(py::ssize_t k = 0; k < vertices.size(); ++k) {
+      const Row r = vertices.data()[k];
+      if(r < 0 || static_cast<std::size_t>(r) >= n || (k > 0 && r <= vertices.data()[k - 1]))
+        throw py::value_error("Triangulation: not a pickled state (vertex rows)");
+      points.emplace_back(rows.data()[3 * r], rows.data()[3 * r + 1], rows.data()[3 * r + 2]);
+    }
+    std::vector<Vertex_handle> handles;
+    t.delaunay_.insert_and_give_vertices(points.begin(), points.end(), std::back_inserter(handles));
+    t.rows_.assign(rows.data(), rows.data() + 3 * n);
+    t.vertex_of_row_.resize(n);
+    for(py::ssize_t k = 0; k < vertices.size(); ++k)
+      if(t.name(handles[k], vertices.data()[k]) != vertices.data()[k])
+        throw py::value_error("Triangulation: not a pickled state (two vertex rows are equal)");
+    return t;
+  }
+
+private:
+  // The finite cells in the order of the exports, and their numbers by cell slot.
+  struct Cell_numbering
+  {
+    std::vector<Cell_handle> cells;
+    std::vector<std::int64_t> number_of_slot; // -1 for infinite cells
+    std::int64_t number_of(Cell_handle c) const { return number_of_slot[c.index()]; }
+  };
+
+  const Cell_numbering& cell_numbering() const
+  {
+    if(numbering_valid_) return numbering_;
+    numbering_ = Cell_numbering();
+    if(delaunay_.dimension() == 3) {
+      std::size_t slots = 0;
+      for(Cell_handle c : delaunay_.all_cell_handles()) slots = std::max<std::size_t>(slots, c.index() + 1);
+      numbering_.number_of_slot.assign(slots, -1);
+      numbering_.cells.reserve(delaunay_.number_of_finite_cells());
+      for(Cell_handle c : delaunay_.finite_cell_handles()) {
+        numbering_.number_of_slot[c.index()] = static_cast<std::int64_t>(numbering_.cells.size());
+        numbering_.cells.push_back(c);
+      }
+    }
+    numbering_valid_ = true;
+    return numbering_;
+  }
+
+  void changed() { numbering_valid_ = false; }
+
+  Row row_of(Vertex_handle v) const
+  {
+    return v.index() < row_of_slot_.size() ? row_of_slot_[v.index()] : no_row;
+  }
+
+  // The row naming v: `r` if v has none yet.
+  Row name(Vertex_handle v, Row r)
+  {
+    if(v.index() >= row_of_slot_.size()) row_of_slot_.resize(v.index() + 1, no_row);
+    Row& named = row_of_slot_[v.index()];
+    if(named == no_row) {
+      named = r;
+      vertex_of_row_[r] = v;
+    }
+    return named;
+  }
+
+  void forget(Vertex_handle v, Row r)
+  {
+    row_of_slot_[v.index()] = no_row;
+    vertex_of_row_[r] = Vertex_handle();
+  }
+
+  // The rows of `indices`, each naming a vertex, none twice.
+  std::vector<Row> checked_vertex_rows(const py::handle& indices, const char* what) const
+  {
+    const auto a = py::array_t<Row, py::array::c_style | py::array::forcecast>::ensure(indices);
+    if(!a || a.ndim() != 1) throw py::value_error(std::string(what) + ": indices must be a 1-d array of integers");
+    std::vector<Row> rows(a.data(), a.data() + a.size());
+    std::vector<char> seen(number_of_rows(), 0);
+    for(std::size_t k = 0; k < rows.size(); ++k) {
+      const Row r = rows[k];
+      if(r < 0 || static_cast<std::size_t>(r) >= number_of_rows() || vertex_of_row_[r] == Vertex_handle())
+        throw py::value_error(std::string(what) + ": index " + std::to_string(r) + " (position " +
+                              std::to_string(k) + ") names no vertex");
+      if(seen[r]++)
+        throw py::value_error(std::string(what) + ": index " + std::to_string(r) + " is given twice");
+    }
+    return rows;
+  }
+
+  Delaunay delaunay_;
+  int threads_ = 1;
+  std::vector<double> rows_;                 // x, y, z of every row inserted
+  std::vector<Vertex_handle> vertex_of_row_; // the vertex a row names, or null
+  std::vector<Row> row_of_slot_;             // the row naming each vertex slot
+  mutable Cell_numbering numbering_;
+  mutable bool numbering_valid_ = false;
+};
+
+// ---------------------------------------------------------------- the mesher
+
+#ifdef FDT3_PYTHON_WITH_MESHER
+CGAL::Fast_mesher_3::Mesher_options mesher_options(const py::object& size, const py::object& threads, bool optimize)
+{
+  if(optimize)
+    throw py::value_error("mesh: optimize=True needs mesh improvement (sliver removal), which this version does "
+                          "not have; pass optimize=False");
+  CGAL::Fast_mesher_3::Mesher_options options;
+  if(!size.is_none()) {
+    options.maximum_size = size.cast<double>();
+    if(!(options.maximum_size > 0)) throw py::value_error("mesh: size must be positive");
+  }
+  options.threads = thread_count(threads);
+  return options;
+}
+
+py::tuple mesh_arrays(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh)
+{
+  py::array_t<double> points({static_cast<py::ssize_t>(mesh.points.size()), py::ssize_t(3)});
+  for(std::size_t i = 0; i < mesh.points.size(); ++i)
+    std::copy(mesh.points[i].begin(), mesh.points[i].end(), points.mutable_data() + 3 * i);
+  py::array tets = index_array(mesh.tetrahedra.size(), 4, static_cast<Row>(mesh.points.size()) - 1);
+  fill_index_array(tets, [&](std::size_t k) { return mesh.tetrahedra[k / 4][k % 4]; });
+  py::array_t<std::int32_t> subdomains(static_cast<py::ssize_t>(mesh.subdomain.size()));
+  std::copy(mesh.subdomain.begin(), mesh.subdomain.end(), subdomains.mutable_data());
+  return py::make_tuple(points, tets, subdomains);
+}
+
+py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py::object& size,
+               const py::object& threads, bool optimize)
+{
+  const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize);
+  const Double_array v = point_rows(vertices, "vertices");
+  const auto t = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
+  if(!t || t.ndim() != 2 || t.shape(1) != 3) throw py::value_error("mesh: triangles must be an (m, 3) integer array");
+  std::vector<std::array<double, 3>> points(static_cast<std::size_t>(v.shape(0)));
+  std::copy(v.data(), v.data() + 3 * v.shape(0), &points[0][0]);
+  std::vector<std::array<std::size_t, 3>> tris(static_cast<std::size_t>(t.shape(0)));
+  for(py::ssize_t k = 0; k < t.shape(0); ++k)
+    for(int i = 0; i < 3; ++i) {
+      const std::int64_t index = t.data()[3 * k + i];
+      if(index < 0 || index >= v.shape(0))
+        throw py::value_error("mesh: triangle " + std::to_string(k) + " has vertex index " + std::to_string(index) +
+                              ", not a row of vertices (" + std::to_string(v.shape(0)) + " rows)");
+      tris[k][i] = static_cast<std::size_t>(index);
+    }
+  CGAL::Fast_mesher_3::Tetrahedral_mesh result;
+  {
+    py::gil_scoped_release unlocked;
+    result = CGAL::Fast_mesher_3::mesh_surfaces(points, tris, options);
+  }
+  return mesh_arrays(result);
+}
+
+py::tuple mesh_files(const std::vector<std::string>& paths, const py::object& size, const py::object& threads,
+                     bool optimize)
+{
+  const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize);
+  if(paths.empty()) throw py::value_error("mesh_files: no file given");
+  CGAL::Fast_mesher_3::Tetrahedral_mesh result;
+  {
+    py::gil_scoped_release unlocked;
+    result = CGAL::Fast_mesher_3::mesh_surface_files(paths, options);
+  }
+  return mesh_arrays(result);
+}
+#endif
+
+// delaunay(points, threads): the one-call form.
+py::tuple delaunay(const py::handle& points, const py::object& threads)
+{
+  Row_triangulation t(thread_count(threads));
+  t.insert(points);
+  return t.finite_cells();
+}
+
+} // namespace fast_delaunay_3_python
+
+PYBIND11_MODULE(_core, m)
+{
+  using namespace fast_delaunay_3_python;
+  m.doc() = "Exact 3D Delaunay triangulations (CGAL's cells, computed by Fast_Delaunay_triangulation_3)";
+
+  m.def("delaunay", &delaunay, py::arg("points"), py::arg("threads") = py::none(),
+        R"(Delaunay triangulation of an (n, 3) array of points.
+
+Returns (tets, neighbors): tets (m, 4) indices into `points` of the finite
+tetrahedra, positively oriented, the same cells as CGAL's
+Delaunay_triangulation_3; neighbors (m, 4): the tetrahedron across the facet
+opposite vertex i, -1 on the convex hull.  Equal points are one vertex, named
+by the first of them.  Indices are int32 (uint32 from 2^31 points on).
+Fewer than 4 affinely independent points: no tetrahedra.
+threads: Moore partitions inserted in parallel (None: all hardware threads).
+A NaN or infinite coordinate raises ValueError naming the row.)");
+
+  py::class_<Row_triangulation>(m, "Triangulation", R"(A Delaunay triangulation kept for several calls.
+
+Vertices are named by rows: the rows of all the arrays inserted so far, in
+order (the first array's rows are 0..n-1, the next array's follow); a row
+equal to an earlier vertex's point names that vertex.)")
+      .def(py::init([](const py::object& points, const py::object& threads) {
+             Row_triangulation t(thread_count(threads));
+             if(!points.is_none()) t.insert(points);
+             return t;
+           }),
+           py::arg("points") = py::none(), py::arg("threads") = py::none())
+      .def("insert", &Row_triangulation::insert, py::arg("points"),
+           "Inserts an (n, 3) array; returns for each row the row naming its vertex.")
+      .def("remove", &Row_triangulation::remove, py::arg("indices"),
+           "Removes the vertices named by the rows `indices` (ValueError, nothing removed, for a row that names "
+           "no vertex or is given twice).")
+      .def("move", &Row_triangulation::move, py::arg("indices"), py::arg("points"),
+           "Moves the vertices of `indices` to the rows of `points`; returns the row naming each afterwards "
+           "(another vertex's if it landed on it: the moved one is then removed, as CGAL's move does).")
+      .def("finite_cells", &Row_triangulation::finite_cells, "(tets, neighbors), as delaunay() returns them.")
+      .def("hull_facets", &Row_triangulation::hull_facets,
+           "(h, 3) rows of the convex hull's triangles, counterclockwise seen from outside.")
+      .def("circumcenters", &Row_triangulation::circumcenters,
+           "(m, 3) circumcentres of the finite cells, in finite_cells() order.")
+      .def("voronoi",
+           [](const Row_triangulation& t) { return py::make_tuple(t.circumcenters(), t.finite_cells()[1]); },
+           "(vertices, neighbors): the Voronoi vertices (the circumcentres) and, per vertex, the four it is joined "
+           "to by a Voronoi edge (-1: an unbounded edge, a ray).")
+      .def("locate", &Row_triangulation::locate, py::arg("queries"),
+           "For each row of a (k, 3) array, the finite cell containing it (finite_cells() order), -1 outside.")
+      .def("nearest_vertex", &Row_triangulation::nearest_vertex, py::arg("queries"),
+           "For each row of a (k, 3) array, the row of the nearest vertex.")
+      .def_property_readonly("vertices", &Row_triangulation::vertex_rows, "The rows naming vertices, increasing.")
+      .def_property_readonly("points",
+                             [](const Row_triangulation& t) {
+                               py::array_t<double> a({static_cast<py::ssize_t>(t.number_of_rows()), py::ssize_t(3)});
+                               std::copy(t.rows().begin(), t.rows().end(), a.mutable_data());
+                               return a;
+                             },
+                             "Every row inserted (a copy), moved vertices at their new place.")
+      .def_property("threads", &Row_triangulation::threads,
+                    [](Row_triangulation& t, const py::object& k) { t.set_threads(thread_count(k)); })
+      .def_property_readonly("dimension", [](const Row_triangulation& t) { return t.delaunay().dimension(); })
+      .def_property_readonly("number_of_vertices",
+                             [](const Row_triangulation& t) { return t.delaunay().number_of_vertices(); })
+      .def_property_readonly("number_of_finite_cells",
+                             [](const Row_triangulation& t) { return t.delaunay().number_of_finite_cells(); })
+      .def("is_valid", [](const Row_triangulation& t) { return t.delaunay().is_valid(); },
+           "CGAL's is_valid(): combinatorics, orientation and the empty-sphere property.")
+      .def(py::pickle([](const Row_triangulation& t) { return t.state(); },
+                      [](const py::tuple& state) { return Row_triangulation::from_state(state); }));
+
+#ifdef FDT3_PYTHON_WITH_MESHER
+  m.def("mesh", &mesh, py::arg("vertices"), py::arg("triangles"), py::arg("size") = py::none(),
+        py::arg("threads") = py::none(), py::arg("optimize") = false,
+        R"(Tetrahedral mesh of the volumes bounded by closed triangulated surfaces.
+
+vertices (n, 3), triangles (t, 3) indices into vertices.  Returns (points,
+tets, subdomains): tets positively oriented, subdomain 1, 2, ... per
+tetrahedron (one per volume).  size: maximum edge size (default: the
+surface's own, interpolated).  A surface that is not closed, oriented,
+manifold and free of self-intersections raises ValueError naming the
+triangles.)");
+  m.def("mesh_files", &mesh_files, py::arg("paths"), py::arg("size") = py::none(), py::arg("threads") = py::none(),
+        py::arg("optimize") = false, "mesh() of the surfaces in files (.off .stl .obj .ply).");
+#endif
+}

@@ -1,0 +1,93 @@
+# fast_delaunay_3.mesh() and mesh_files(): the volumes of the meshes against
+# the volumes their surfaces enclose (divergence theorem), the boundary
+# triangles kept, and the errors of bad surfaces.
+import os
+
+import numpy as np
+import pytest
+
+import fast_delaunay_3
+from checks import signed_volumes
+
+if not hasattr(fast_delaunay_3, "mesh"):
+    pytest.skip("the module was built without TetGen: no mesher", allow_module_level=True)
+
+# The unit cube, triangles counterclockwise seen from outside.
+CUBE_POINTS = np.array([[x, y, z] for x in (0.0, 1.0) for y in (0.0, 1.0) for z in (0.0, 1.0)])
+CUBE_TRIANGLES = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                           [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+
+
+def enclosed_volume(points, triangles):
+    corners = np.asarray(points)[np.asarray(triangles)]
+    return np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2])).sum() / 6.0
+
+
+def read_off(path):
+    with open(path) as f:
+        words = f.read().split()
+    assert words[0] == "OFF"
+    nv, nf = int(words[1]), int(words[2])
+    values = words[4:]
+    points = np.array(values[:3 * nv], dtype=float).reshape(nv, 3)
+    faces = np.array(values[3 * nv:3 * nv + 4 * nf], dtype=np.int64).reshape(nf, 4)
+    assert (faces[:, 0] == 3).all()
+    return points, faces[:, 1:]
+
+
+def test_the_cube_is_filled_with_positive_tetrahedra():
+    points, tets, subdomains = fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=0.2, threads=1)
+    assert points.shape[1] == 3 and tets.shape[1] == 4 and subdomains.shape == (len(tets),)
+    volumes = signed_volumes(points, tets)
+    assert (volumes > 0).all()
+    assert volumes.sum() == pytest.approx(1.0, rel=1e-12)
+    assert set(subdomains.tolist()) == {1}
+    assert len(tets) > 100  # refined to size 0.2, not the 5 or 6 tetrahedra of the corners alone
+    assert ((points >= 0) & (points <= 1)).all()
+
+
+def test_threads_give_a_mesh_of_the_same_volume():
+    _, tets2, _ = fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=0.1, threads=2)
+    points, tets1, _ = fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=0.1, threads=1)
+    assert signed_volumes(points, tets1).sum() == pytest.approx(1.0, rel=1e-12)
+    assert abs(len(tets2) - len(tets1)) < 0.2 * len(tets1)
+
+
+def test_an_open_surface_raises_naming_its_triangles():
+    with pytest.raises(ValueError, match="triangle"):
+        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES[:-1])
+
+
+@pytest.mark.parametrize("triangles, words", [(np.array([[0, 1, 8]]), "triangle 0 has vertex index 8"),
+                                              (np.array([[0, 1]]), r"\(m, 3\) integer array")])
+def test_bad_triangle_arrays_raise(triangles, words):
+    with pytest.raises(ValueError, match=words):
+        fast_delaunay_3.mesh(CUBE_POINTS, triangles)
+
+
+def test_bad_options_raise():
+    with pytest.raises(ValueError, match="size must be positive"):
+        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=-1)
+    with pytest.raises(ValueError, match="optimize=True"):
+        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, optimize=True)
+    with pytest.raises(ValueError, match="no file"):
+        fast_delaunay_3.mesh_files([])
+
+
+def test_a_cgal_data_surface_from_its_file():
+    path = os.path.join(os.environ.get("FDT3_CGAL_DATA_DIR", ""), "elephant.off")
+    if not os.path.exists(path):
+        pytest.skip(f"{path} is missing (apt install libcgal-demo, re-run CMake)")
+    points, tets, subdomains = fast_delaunay_3.mesh_files([path], threads=2)
+    volumes = signed_volumes(points, tets)
+    assert (volumes > 0).all()
+    surface_points, surface_triangles = read_off(path)
+    assert volumes.sum() == pytest.approx(abs(enclosed_volume(surface_points, surface_triangles)), rel=1e-9)
+    assert set(subdomains.tolist()) == {1}
+    mesh = fast_delaunay_3.to_meshio(points, tets, subdomains)
+    assert len(mesh.cells_dict["tetra"]) == len(tets)
+
+
+def test_a_missing_file_raises():
+    with pytest.raises(Exception, match="no_such_surface.off"):
+        fast_delaunay_3.mesh_files(["/nonexistent/no_such_surface.off"])
