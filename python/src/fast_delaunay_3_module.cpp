@@ -130,6 +130,18 @@ private:
   Kind kind_;
 };
 
+// Calls f(begin, end) on `threads` threads for consecutive ranges covering
+// [0, n); one range, on this thread, for small n.
+template <class F>
+void for_each_range(std::size_t n, int threads, F f)
+{
+  const std::size_t ranges = std::min<std::size_t>(std::max(1, threads), 1 + n / 65536);
+  std::vector<std::thread> workers;
+  for(std::size_t k = 1; k < ranges; ++k) workers.emplace_back(f, n * k / ranges, n * (k + 1) / ranges);
+  f(0, n / ranges);
+  for(std::thread& w : workers) w.join();
+}
+
 // ---------------------------------------------------------------- the triangulation of rows
 
 // A Fast_Delaunay_triangulation_3 whose vertices are named by rows.
@@ -247,18 +259,22 @@ public:
     const Index_buffer tets_buffer(tets), neighbors_buffer(neighbors);
     {
       py::gil_scoped_release unlocked;
-      tets_buffer.with_buffer([&](auto* out) {
-        typedef std::remove_pointer_t<decltype(out)> Index;
-        for(std::size_t c = 0; c < m; ++c) {
-          const Vertex_id* v = mesh.vertex_ids(numbering.cells[c]);
-          for(int i = 0; i < 4; ++i) out[4 * c + i] = static_cast<Index>(row_of_slot_[v[i]]);
-        }
-      });
-      neighbors_buffer.with_buffer([&](auto* out) {
-        typedef std::remove_pointer_t<decltype(out)> Index;
-        for(std::size_t c = 0; c < m; ++c)
-          for(int i = 0; i < 4; ++i)
-            out[4 * c + i] = static_cast<Index>(numbering.number_of_slot[mesh.neighbor(numbering.cells[c], i)]);
+      // Each thread fills a range of cells of both arrays: the writes, into
+      // pages the kernel must first zero, are most of the time.
+      for_each_range(m, threads_, [&](std::size_t begin, std::size_t end) {
+        tets_buffer.with_buffer([&](auto* out) {
+          typedef std::remove_pointer_t<decltype(out)> Index;
+          for(std::size_t c = begin; c < end; ++c) {
+            const Vertex_id* v = mesh.vertex_ids(numbering.cells[c]);
+            for(int i = 0; i < 4; ++i) out[4 * c + i] = static_cast<Index>(row_of_slot_[v[i]]);
+          }
+        });
+        neighbors_buffer.with_buffer([&](auto* out) {
+          typedef std::remove_pointer_t<decltype(out)> Index;
+          for(std::size_t c = begin; c < end; ++c)
+            for(int i = 0; i < 4; ++i)
+              out[4 * c + i] = static_cast<Index>(numbering.number_of(mesh.neighbor(numbering.cells[c], i)));
+        });
       });
     }
     return py::make_tuple(tets, neighbors);
@@ -393,9 +409,16 @@ private:
   // neighbor(i) are the record's, so both readings agree.
   struct Cell_numbering
   {
-    std::vector<Tet_id> cells;                // slots of the finite cells
-    std::vector<std::int64_t> number_of_slot; // -1 for free slots and infinite cells
-    std::int64_t number_of(Cell_handle c) const { return number_of_slot[c.index()]; }
+    // 32-bit slots and numbers: half the memory traffic of Tet_id's 64 bits.
+    typedef std::uint32_t Slot;
+    static constexpr Slot none = std::numeric_limits<Slot>::max();
+    std::vector<Slot> cells;          // slots of the finite cells
+    std::vector<Slot> number_of_slot; // `none` for free slots and infinite cells
+    std::int64_t number_of(Tet_id t) const
+    {
+      return number_of_slot[t] == none ? std::int64_t(-1) : std::int64_t(number_of_slot[t]);
+    }
+    std::int64_t number_of(Cell_handle c) const { return number_of(static_cast<Tet_id>(c.index())); }
   };
 
   const Cell_numbering& cell_numbering() const
@@ -404,12 +427,14 @@ private:
     numbering_ = Cell_numbering();
     if(delaunay_.dimension() == 3) {
       const Flat_storage& mesh = delaunay_.flat_storage();
-      numbering_.number_of_slot.assign(mesh.number_of_slots(), -1);
+      if(mesh.number_of_slots() >= Cell_numbering::none)
+        throw std::length_error("fast_delaunay_3: more than 2^32 - 1 cell slots to number");
+      numbering_.number_of_slot.assign(mesh.number_of_slots(), Cell_numbering::none);
       numbering_.cells.reserve(delaunay_.number_of_finite_cells());
       for(Tet_id t = 0; t < mesh.number_of_slots(); ++t) {
         if(!mesh.is_live(t) || mesh.is_ghost(t)) continue;
-        numbering_.number_of_slot[t] = static_cast<std::int64_t>(numbering_.cells.size());
-        numbering_.cells.push_back(t);
+        numbering_.number_of_slot[t] = static_cast<Cell_numbering::Slot>(numbering_.cells.size());
+        numbering_.cells.push_back(static_cast<Cell_numbering::Slot>(t));
       }
     }
     numbering_valid_ = true;
