@@ -10,11 +10,12 @@
 // Rows fast-remove / cgal-remove and fast-move / cgal-move (not run by default) time the removal of 10% of the
 // vertices one by one, and the move of 10% by a small random displacement, after an untimed insertion of all points;
 // rows fast-epec / cgal-epec (not run by default) time the insertion of the same points as points of CGAL's exact
-// constructions kernel; each is compared with its CGAL counterpart.
+// constructions kernel; rows fast-loop / cgal-loop and fast-hint / cgal-hint (not run by default) time insert(p)
+// called once per point, without and with the previous vertex as hint; each is compared with its CGAL counterpart.
 //
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all]
 //                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-move,cgal-move,
-//                                      fast-epec,cgal-epec]
+//                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint]
 //                           [--rounds 3] [--threads 2[,1...]] [--phases] [--verbose] [--csv]
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
@@ -214,6 +215,29 @@ Engine_result move_tenth(const Points& points)
   return result;
 }
 
+// Times insert(p) called once per point in input order (random in space), as code that receives points one at a
+// time does; with_hint: the `v = insert(p, v)` idiom, each walk starting at the previous vertex.
+template <class Triangulation>
+Engine_result insert_one_by_one(const Points& points, bool with_hint)
+{
+  Triangulation triangulation;
+  Engine_result result;
+  const Clock::time_point start = Clock::now();
+  typename Triangulation::Vertex_handle v;
+  if(with_hint)
+    for(const Point& p : points) v = triangulation.insert(p, v);
+  else
+    for(const Point& p : points) triangulation.insert(p);
+  result.seconds = seconds_since(start);
+  result.finite_cells = triangulation.number_of_finite_cells();
+  return result;
+}
+
+Engine_result run_fast_loop(const Points& points, int /*threads*/) { return insert_one_by_one<Fast_dt>(points, false); }
+Engine_result run_cgal_loop(const Points& points, int /*threads*/) { return insert_one_by_one<Cgal_dt>(points, false); }
+Engine_result run_fast_hint(const Points& points, int /*threads*/) { return insert_one_by_one<Fast_dt>(points, true); }
+Engine_result run_cgal_hint(const Points& points, int /*threads*/) { return insert_one_by_one<Cgal_dt>(points, true); }
+
 Engine_result run_fast_remove(const Points& points, int /*threads*/) { return remove_tenth<Fast_dt>(points); }
 Engine_result run_cgal_remove(const Points& points, int /*threads*/) { return remove_tenth<Cgal_dt>(points); }
 Engine_result run_fast_move(const Points& points, int /*threads*/) { return move_tenth<Fast_dt>(points); }
@@ -323,6 +347,10 @@ const std::vector<Engine>& engine_table()
       {"cgal-par", true, true, run_cgal_parallel},
       {"fast-par", true, true, run_fast_parallel},
 #endif
+      {"fast-loop", false, false, run_fast_loop, "cgal-loop"},
+      {"cgal-loop", false, false, run_cgal_loop, "cgal-loop"},
+      {"fast-hint", false, false, run_fast_hint, "cgal-hint"},
+      {"cgal-hint", false, false, run_cgal_hint, "cgal-hint"},
       {"fast-remove", false, false, run_fast_remove, "cgal-remove"},
       {"cgal-remove", false, false, run_cgal_remove, "cgal-remove"},
       {"fast-move", false, false, run_fast_move, "cgal-move"},

@@ -24,6 +24,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_removal.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Walk_start_grid.h>
 
 #include <algorithm>
 #include <chrono>
@@ -95,6 +96,7 @@ public:
     dimension = -1;
     lower.start(mesh);
     hint_ = 0;
+    walk_starts_.clear();
   }
 
   // Takes over a triangulation built elsewhere (a file read by
@@ -146,6 +148,9 @@ public:
       throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^31 - 2 vertices");
 
     const Clock::time_point t0 = Clock::now();
+    // The grid's tetrahedra would be valid walk starts still, but far from
+    // their cells once the bulk insertion reuses the slots.
+    walk_starts_.clear();
     const std::size_t first_new = vertex_slots();
     Brio_order order = brio_order(xyz, n, seed, partitions);
     mesh.vertices.resize(first_new + n);
@@ -190,8 +195,11 @@ public:
   }
 
   // Inserts one point; returns its vertex id (an older one for a duplicate).
+  // In dimension 3 without the bulk path's sort and buffers (insert(p) in a
+  // loop: see insert_one_from).
   Vertex_id insert_one(const double* p)
   {
+    if(dimension == 3) return insert_one_from(p, Tet_id(-1), single_ball_);
     std::vector<Vertex_id> id;
     insert(p, 1, &id);
     return id[0];
@@ -257,10 +265,11 @@ public:
   {
     CGAL_precondition(dimension == 3);
     const Vertex_id v = append_vertex(p);
-    Insertion_scratch scratch;
+    Insertion_scratch& scratch = single_scratch_;
     Delaunay_kernel<> kernel = sequential_kernel(scratch);
     Tet_id hint = start < mesh.number_of_slots() && mesh.is_live(start) ? start : hint_;
     if(!mesh.is_live(hint)) hint = mesh.first_live_tet();
+    hint = walk_starts_.start(mesh, p, hint, mesh.live_vertices(), box_lo_, box_hi_);
     Vertex_id existing = ghost_vertex;
     const bool duplicate = kernel.insert(v, hint, existing) == Insertion_result::duplicate;
     hint_ = hint;
@@ -271,6 +280,7 @@ public:
       return existing;
     }
     ball.assign(scratch.ball.begin(), scratch.ball.end());
+    walk_starts_.remember(p, ball.front());
     finish_single_insertion(scratch);
     return v;
   }
@@ -283,7 +293,7 @@ public:
   {
     CGAL_precondition(dimension == 3 && n > 0);
     const Vertex_id v = given == ghost_vertex ? append_vertex(p) : place_unplaced_vertex(given, p);
-    Insertion_scratch scratch;
+    Insertion_scratch& scratch = single_scratch_;
     Delaunay_kernel<> kernel = sequential_kernel(scratch);
     const bool filled = kernel.fill_hole(v, hole, n);
     CGAL_assertion(filled); // the mesh's own slots never run out
@@ -378,7 +388,7 @@ private:
     extend_bounding_box_with(v);
     Vertex_id simplex[4];
     if(dimension == 3) {
-      Insertion_scratch scratch;
+      Insertion_scratch& scratch = single_scratch_;
       Delaunay_kernel<> kernel = sequential_kernel(scratch);
       Tet_id hint = mesh.is_live(hint_) ? hint_ : mesh.first_live_tet();
       Vertex_id existing = ghost_vertex;
@@ -442,13 +452,16 @@ private:
     return Delaunay_kernel<>(mesh, scratch, Mesh_slots{&mesh}, Static_filter::for_box(box_lo_, box_hi_),
                              Sub_determinant_filter::for_box(box_lo_, box_hi_));
   }
-  void finish_single_insertion(const Insertion_scratch& scratch)
+  // Applies the counts of the scratch kept for single insertions and resets them.
+  void finish_single_insertion(Insertion_scratch& scratch)
   {
     mesh.live_tets += scratch.live_delta;
     mesh.ghost_tets += scratch.ghost_delta;
     last_report = Insertion_report();
     last_report.points = 1;
     last_report.kernel = scratch.stats;
+    scratch.live_delta = scratch.ghost_delta = 0;
+    scratch.stats = Kernel_statistics();
   }
 
   // 6.75 tetrahedra per vertex in the Poisson limit, ghosts included.
@@ -745,6 +758,11 @@ private:
   }
 
   Tet_id hint_ = 0;
+  // One-point insertions: where their walks start, and the buffers they
+  // reuse (the kernel's and the new cells').
+  Walk_start_grid walk_starts_;
+  Insertion_scratch single_scratch_;
+  std::vector<Tet_id> single_ball_;
   double box_lo_[3], box_hi_[3];
 };
 
