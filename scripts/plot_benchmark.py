@@ -14,6 +14,8 @@ import csv
 import os
 import sys
 
+from figure_files import save_figure  # beside this script
+
 # One colour per engine, the same in every figure; engines not listed take the remaining colours in order.
 ENGINE_COLOURS = {
     "fast": "tab:blue",
@@ -63,18 +65,22 @@ def read_results(path):
             "threads": int(row["threads"]),
             "seconds": float(row["median_seconds"]),
             "mtets": float(row["mtets_per_second"]),
+            "load": float(row["load_average"]),
         })
     if not rows:
         sys.exit("plot_benchmark: %s has no result rows" % path)
     return rows, comments
 
 
-def title_of(comments):
-    """'Fast_Delaunay_triangulation_3 benchmark, DATE' and the machine line, as the benchmark printed them."""
+def title_of(comments, rows):
+    """'Fast_Delaunay_triangulation_3 benchmark, DATE', the machine line as the benchmark printed them, and the load
+    average the measurements started at (other work on the machine slows the engines, the parallel ones most)."""
     heading = next((c for c in comments if "benchmark," in c), "delaunay_benchmark")
     machine = next((c[len("machine:"):].strip() for c in comments if c.startswith("machine:")), "")
+    loads = sorted({r["load"] for r in rows})
+    load = "load average %.2f" % loads[0] if len(loads) == 1 else "load average %.2f to %.2f" % (loads[0], loads[-1])
     warnings = [c for c in comments if c.startswith("WARNING")]
-    title = heading + ("\n" + machine if machine else "")
+    title = heading + "\n" + (machine + "; " if machine else "") + load
     if warnings:
         title += "\n" + "; ".join(warnings)
     return title
@@ -122,13 +128,14 @@ def speedups(rows):
 
 def draw(rows, comments, figure_path):
     pyplot = import_pyplot()
+    from matplotlib import ticker
     distributions = list(dict.fromkeys(r["distribution"] for r in rows))
     engines = list(dict.fromkeys(r["engine"] for r in rows))
     colours = colours_for(engines)
     has_speedup = any(speedups([r for r in rows if r["distribution"] == d]) for d in distributions)
     columns = 3 if has_speedup else 2
     figure, axes = pyplot.subplots(len(distributions), columns, figsize=(5.0 * columns, 4.2 * len(distributions)),
-                                   squeeze=False)
+                                   squeeze=False, layout="constrained")
     for row_axes, distribution in zip(axes, distributions):
         subset = [r for r in rows if r["distribution"] == distribution]
         threads_of = {}
@@ -146,6 +153,10 @@ def draw(rows, comments, figure_path):
             rate_axis.plot(n, [p[2] for p in points], **common)
         time_axis.set_xscale("log")
         time_axis.set_yscale("log")
+        # Labels at 1, 2 and 5 of every decade: a run spans one or two decades, too few for powers of ten alone.
+        time_axis.yaxis.set_major_locator(ticker.LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+        time_axis.yaxis.set_major_formatter(ticker.FuncFormatter(lambda value, _: "%g" % value))
+        time_axis.yaxis.set_minor_formatter(ticker.NullFormatter())
         time_axis.set_ylabel("seconds (median)")
         time_axis.set_title("%s points: time" % distribution)
         rate_axis.set_xscale("log")
@@ -158,9 +169,8 @@ def draw(rows, comments, figure_path):
         time_axis.legend(fontsize="small")
         if has_speedup:
             draw_speedup(row_axes[2], speedups(subset), engines, colours, distribution)
-    figure.suptitle(title_of(comments), fontsize="medium")
-    figure.tight_layout()
-    figure.savefig(figure_path, dpi=90)
+    figure.suptitle(title_of(comments, rows), fontsize="medium")
+    save_figure(figure, figure_path, dpi=90)
 
 
 def draw_speedup(axis, by_engine_n, engines, colours, distribution):

@@ -13,6 +13,8 @@ import json
 import os
 import sys
 
+from figure_files import save_figure  # beside this script
+
 # One colour per tool, the same in every figure; tools not listed take the remaining colours in order.
 TOOL_COLOURS = {
     "ours": "tab:blue",
@@ -79,7 +81,8 @@ def draw(results, figure_path):
     radius_edge_edges.append(radius_edge_edges[-1] + (radius_edge_edges[-1] - radius_edge_edges[-2]))
     width = results["min_dihedral_bin_degrees"]
 
-    figure, axes = pyplot.subplots(len(surfaces), 2, figsize=(15, 3.4 * len(surfaces)), squeeze=False)
+    figure, axes = pyplot.subplots(len(surfaces), 2, figsize=(15, 3.4 * len(surfaces)), squeeze=False,
+                                   layout="constrained")
     for (ratio_axis, angle_axis), surface in zip(axes, surfaces):
         for row in (r for r in rows if r["surface"] == surface):
             counts = thread_counts[row["tool"]]
@@ -101,8 +104,7 @@ def draw(results, figure_path):
         angle_axis.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.03, 1.0), borderaxespad=0)
     figure.suptitle("Mesh quality, the same surfaces and size field for every tool, no mesh improvement\n"
                     "mesher_benchmark, %s; %s" % (results["date"], results["machine"]), fontsize="medium")
-    figure.tight_layout()
-    figure.savefig(figure_path, dpi=80)
+    save_figure(figure, figure_path, dpi=80)
 
 
 def main(argv):
