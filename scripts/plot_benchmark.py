@@ -14,7 +14,7 @@ import csv
 import os
 import sys
 
-from figure_files import save_figure  # beside this script
+from figure_files import import_pyplot, save_figure  # beside this script
 
 # One colour per engine, the same in every figure; engines not listed take the remaining colours in order.
 ENGINE_COLOURS = {
@@ -31,17 +31,6 @@ ENGINE_COLOURS = {
 }
 LINE_STYLES = ["-", "--", ":", "-."]
 MARKERS = ["o", "s", "^", "D", "v", "P"]
-
-
-def import_pyplot():
-    try:
-        import matplotlib
-    except ImportError:
-        sys.exit("plot_benchmark: matplotlib is not installed for %s (Debian: apt-get install python3-matplotlib, "
-                 "which scripts/install_dependencies.sh does)" % sys.executable)
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as pyplot
-    return pyplot
 
 
 def read_results(path):
@@ -127,7 +116,7 @@ def speedups(rows):
 
 
 def draw(rows, comments, figure_path):
-    pyplot = import_pyplot()
+    pyplot = import_pyplot("plot_benchmark")
     from matplotlib import ticker
     distributions = list(dict.fromkeys(r["distribution"] for r in rows))
     engines = list(dict.fromkeys(r["engine"] for r in rows))

@@ -13,7 +13,7 @@ import json
 import os
 import sys
 
-from figure_files import save_figure  # beside this script
+from figure_files import import_pyplot, save_figure  # beside this script
 
 # One colour per tool, the same in every figure; tools not listed take the remaining colours in order.
 TOOL_COLOURS = {
@@ -24,17 +24,6 @@ TOOL_COLOURS = {
 }
 SPARE_COLOURS = ["tab:purple", "tab:brown", "tab:pink", "tab:gray", "tab:olive", "tab:cyan"]
 LINE_STYLES = ["-", "--", ":", "-."]
-
-
-def import_pyplot():
-    try:
-        import matplotlib
-    except ImportError:
-        sys.exit("plot_mesh_quality: matplotlib is not installed for %s (Debian: apt-get install python3-matplotlib, "
-                 "which scripts/install_dependencies.sh does)" % sys.executable)
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as pyplot
-    return pyplot
 
 
 def read_results(path):
@@ -70,7 +59,7 @@ def label_of(row, several_thread_counts):
 
 
 def draw(results, figure_path):
-    pyplot = import_pyplot()
+    pyplot = import_pyplot("plot_mesh_quality")
     rows = results["rows"]
     surfaces = list(dict.fromkeys(r["surface"] for r in rows))
     tools = list(dict.fromkeys(r["tool"] for r in rows))
