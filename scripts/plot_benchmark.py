@@ -152,7 +152,12 @@ def draw(rows, comments, figure_path):
         rate_axis.set_ylim(bottom=0)
         rate_axis.set_ylabel("million tetrahedra per second")
         rate_axis.set_title("%s points: throughput" % distribution)
+        sizes = sorted({r["n"] for r in subset})
         for axis in (time_axis, rate_axis):
+            # Ticks at the sizes measured: a run spans a decade or two, where log ticks crowd or are missing.
+            axis.set_xticks(sizes)
+            axis.set_xticklabels([format_n(n) for n in sizes])
+            axis.xaxis.set_minor_formatter(ticker.NullFormatter())
             axis.set_xlabel("n (input points)")
             axis.grid(True, which="both", alpha=0.3)
         time_axis.legend(fontsize="small")
@@ -184,8 +189,9 @@ def draw_speedup(axis, by_engine_n, engines, colours, distribution):
 
 
 def format_n(n):
-    exponent = len(str(n)) - 1
-    return "1e%d" % exponent if n == 10 ** exponent else "{:,}".format(n)
+    """1e5, 2e6 for a single digit times a power of ten from 1000 on (as --n is written), 123,456 otherwise."""
+    digits = str(n).rstrip("0")
+    return "%se%d" % (digits, len(str(n)) - 1) if len(digits) == 1 and n >= 1000 else "{:,}".format(n)
 
 
 def main(argv):
