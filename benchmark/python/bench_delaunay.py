@@ -193,7 +193,7 @@ def header(args, engines):
     return date, machine, lines
 
 
-def measure(args, engines, n):
+def measure(args, engines, n, load):
     baseline = run_child("none", n, args.seed)
     runs = {e: [] for e in engines}
     for _ in range(args.rounds):
@@ -203,7 +203,7 @@ def measure(args, engines, n):
     for e in engines:
         good = [r for r in runs[e] if "error" not in r]
         errors = [r["error"] for r in runs[e] if "error" in r]
-        row = {"engine": e, "n": n, "errors": errors}
+        row = {"engine": e, "n": n, "errors": errors, "load": load}
         if good:
             counts = {r["tetrahedra"] for r in good}
             row.update(seconds=statistics.median(r["seconds"] for r in good), tetrahedra=good[-1]["tetrahedra"],
@@ -258,7 +258,7 @@ def plot(path, rows, date, machine):
     colours = {"scipy": "tab:orange", "ours-1": "tab:blue", "ours-2": "tab:green", "gmsh": "tab:purple"}
     sizes = sorted({r["n"] for r in rows})
     engines = [e for e in ENGINES if any(r["engine"] == e and "seconds" in r for r in rows)]
-    figure, (time_axis, rate_axis, memory_axis) = pyplot.subplots(1, 3, figsize=(15, 4.2))
+    figure, (time_axis, rate_axis, memory_axis) = pyplot.subplots(1, 3, figsize=(15, 4.2), layout="constrained")
     width = 0.8 / max(1, len(engines))
     for k, e in enumerate(engines):
         by_n = {r["n"]: r for r in rows if r["engine"] == e and "seconds" in r}
@@ -272,10 +272,11 @@ def plot(path, rows, date, machine):
         axis.set_xticks(range(len(sizes)))
         axis.set_xticklabels(["n = {:,}".format(n) for n in sizes])
         axis.grid(True, axis="y", which="both", alpha=0.3)
-    # Log seconds, so that a 90 s and a 1 s bar both show; the bars start a decade below the shortest.
+    # Log seconds, so that a 90 s and a 0.1 s bar both show: from a decade below the shortest bar's decade, and
+    # a decade of room above the longest for the legend.
     time_axis.set_yscale("log")
-    shortest = min(r["seconds"] for r in rows if "seconds" in r)
-    time_axis.set_ylim(bottom=10 ** math.floor(math.log10(shortest)))
+    seconds = [r["seconds"] for r in rows if "seconds" in r]
+    time_axis.set_ylim(10 ** (math.floor(math.log10(min(seconds))) - 1), 10 * max(seconds))
     time_axis.set_ylabel("seconds (median)")
     time_axis.set_title("time of one triangulation")
     time_axis.legend(fontsize="small", loc="upper left")
@@ -283,8 +284,10 @@ def plot(path, rows, date, machine):
     rate_axis.set_title("throughput")
     memory_axis.set_ylabel("peak MiB of the process")
     memory_axis.set_title("peak memory (interpreter and points included)")
-    figure.suptitle("Python Delaunay benchmark, uniform points, %s\n%s" % (date, machine), fontsize="medium")
-    figure.tight_layout()
+    loads = sorted({r["load"] for r in rows})
+    load = "%.2f" % loads[0] if len(loads) == 1 else "%.2f to %.2f" % (loads[0], loads[-1])
+    figure.suptitle("Python Delaunay benchmark, uniform points, %s\n%s; load average %s" % (date, machine, load),
+                    fontsize="medium")
     figure.savefig(path, dpi=90)
     print("bench_delaunay: wrote %s" % path)
 
@@ -327,7 +330,7 @@ def main():
     all_rows, all_warnings = [], []
     for n in args.n:
         load = load_average()
-        baseline, rows = measure(args, engines, n)
+        baseline, rows = measure(args, engines, n, load)
         print_table(n, baseline, rows, load)
         warnings = warnings_of(rows)
         for warning in warnings:
