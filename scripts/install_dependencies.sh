@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Installs, with apt, whatever this package needs that Debian 12 does not have yet: the compiler, CMake, CGAL and
 # its number types (GMP, MPFR, Boost), TBB for the parallel engines, GoogleTest, TetGen for the mesher's boundary
-# recovery, meshio (Python) to read the mesher's files back in a test, CGAL's data surfaces (libcgal-demo) for the
-# mesher's CGAL-data test and benchmark, Gmsh's library (HXT, OpenCASCADE) for that benchmark; for the Python module
-# pybind11 and numpy, and pytest and scipy (the oracle of its tests). Does nothing if all are present.
+# recovery, CGAL's data surfaces (libcgal-demo) for the mesher's CGAL-data test and benchmark, Gmsh's library (HXT,
+# OpenCASCADE) for that benchmark; and for Debian's /usr/bin/python3: pybind11 and numpy for the Python module,
+# pytest and scipy (the oracle of its tests), meshio to read the mesher's files back in a test, matplotlib for the
+# benchmarks' figures (--plot), and Gmsh's Python API, whose tetrahedralize the Python benchmark times beside ours
+# and scipy's. Does nothing if all are present.
 set -euo pipefail
 
-packages=(build-essential cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev libgtest-dev libtet1.5-dev python3-meshio libcgal-demo libgmsh-dev
-          python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-scipy)
+packages=(build-essential cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev libgtest-dev libtet1.5-dev
+          libcgal-demo libgmsh-dev python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-scipy
+          python3-meshio python3-matplotlib python3-gmsh)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -16,7 +16,10 @@
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all]
 //                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-move,cgal-move,
 //                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint]
-//                           [--rounds 3] [--threads 2[,1...]] [--phases] [--verbose] [--csv]
+//                           [--rounds 3] [--threads 2[,1...]] [--phases] [--verbose] [--csv FILE|-]
+//
+// --csv FILE writes one row per engine, thread count, n and distribution (the medians) beside the table, with the
+// machine in '#' lines above them: scripts/plot_benchmark.py draws it (scripts/benchmark.sh --plot does both).
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 
@@ -459,7 +462,7 @@ struct Options
   int rounds = 3;
   bool phases = false;
   bool verbose = false;
-  bool csv = false;
+  std::string csv_path;               // empty: no CSV; "-": CSV on standard output instead of the table
 };
 
 std::vector<std::string> split(const std::string& list)
@@ -519,7 +522,9 @@ void print_usage(std::FILE* to)
                "  --phases        also print our per-phase breakdown (sort, init, walk, cavity, ball, other)\n"
                "  --verbose       also print the attempts of our parallel engine (paper Table 2), one more run per\n"
                "                  --threads value with exactly that many partitions\n"
-               "  --csv           comma-separated output; comments start with '#'\n",
+               "  --csv FILE      also write the table as comma-separated values to FILE, the machine in lines\n"
+               "                  that start with '#' (scripts/plot_benchmark.py draws it); '-': on standard\n"
+               "                  output, instead of the table\n",
                join(engine_names(false)).c_str(), join(engine_names(true)).c_str());
 }
 
@@ -559,7 +564,7 @@ Options parse_options(int argc, char** argv)
     } else if(option == "--verbose") {
       options.verbose = true;
     } else if(option == "--csv") {
-      options.csv = true;
+      options.csv_path = value();
     } else if(option == "--help" || option == "-h") {
       print_usage(stdout);
       std::exit(0);
@@ -621,29 +626,33 @@ std::string utc_now()
   return text;
 }
 
-void print_machine(const Options& options)
+// The machine, build and method, each line after `prefix` ("# " in a CSV file, which plot_benchmark.py reads for its
+// title).
+void print_machine(std::FILE* out, const char* prefix)
 {
-  const char* c = options.csv ? "# " : "";
-  std::printf("%sFast_Delaunay_triangulation_3 benchmark, %s\n", c, utc_now().c_str());
-  std::printf("%smachine: %s, %u hardware threads, %d usable by this process\n", c, cpu_model().c_str(),
-              std::thread::hardware_concurrency(), usable_cores());
-  std::printf("%sbuild:   %s, CGAL %s, ", c, compiler().c_str(), CGAL_VERSION_STR);
+  const char* c = prefix;
+  std::fprintf(out, "%sFast_Delaunay_triangulation_3 benchmark, %s\n", c, utc_now().c_str());
+  std::fprintf(out, "%smachine: %s, %u hardware threads, %d usable by this process\n", c, cpu_model().c_str(),
+               std::thread::hardware_concurrency(), usable_cores());
+  std::fprintf(out, "%sbuild:   %s, CGAL %s, ", c, compiler().c_str(), CGAL_VERSION_STR);
 #ifdef CGAL_LINKED_WITH_TBB
-  std::printf("TBB %d.%d", TBB_VERSION_MAJOR, TBB_VERSION_MINOR);
+  std::fprintf(out, "TBB %d.%d", TBB_VERSION_MAJOR, TBB_VERSION_MINOR);
 #else
-  std::printf("no TBB");
+  std::fprintf(out, "no TBB");
 #endif
 #ifdef NDEBUG
-  std::printf(", NDEBUG\n");
+  std::fprintf(out, ", NDEBUG\n");
 #else
-  std::printf(", assertions ON (not a Release build: times are not representative)\n");
+  std::fprintf(out, ", assertions ON (not a Release build: times are not representative)\n");
 #endif
-  std::printf("%smethod:  every engine run is its own forked process; seconds = insertion into an empty\n"
-              "%s         triangulation (-remove, -move rows: removing / moving 10%% of the vertices one by one after\n"
-              "%s         an untimed insertion), median over the rounds, engines interleaved in each; fast = ours, 1 thread;\n"
-              "%s         peak MiB = the child's max RSS, which includes the input points (generated once in the\n"
-              "%s         parent before forking, %zu bytes each) and the baseline process, alike for every engine\n",
-              c, c, c, c, c, sizeof(Point));
+  std::fprintf(out,
+               "%smethod:  every engine run is its own forked process; seconds = insertion into an empty\n"
+               "%s         triangulation (-remove, -move rows: removing / moving 10%% of the vertices one by one\n"
+               "%s         after an untimed insertion), median over the rounds, engines interleaved in each;\n"
+               "%s         fast = ours, 1 thread; peak MiB = the child's max RSS, which includes the input points\n"
+               "%s         (generated once in the parent before forking, %zu bytes each) and the baseline process,\n"
+               "%s         alike for every engine\n",
+               c, c, c, c, c, sizeof(Point), c);
 }
 
 // ------------------------------------------------------------------------------------------------ measuring
@@ -904,39 +913,38 @@ void print_table(const Measurement& m, int rounds)
   std::fflush(stdout);
 }
 
-void print_csv_header()
+void print_csv_header(std::FILE* out)
 {
-  std::printf("n,distribution,input_points,engine,threads,rounds,median_seconds,finite_cells,mtets_per_second,"
-              "peak_mib,baseline_mib,load_average,speedup_vs_cgal,sort_s,init_s,walk_s,cavity_s,ball_s,other_s,total_s,"
-              "walk_steps_per_point,cavity_tets_per_point,ball_tets_per_point,conflict_tests_per_point,"
-              "small_cavities,large_cavities\n");
+  std::fprintf(out, "n,distribution,input_points,engine,threads,rounds,median_seconds,finite_cells,mtets_per_second,"
+               "peak_mib,baseline_mib,load_average,speedup_vs_cgal,sort_s,init_s,walk_s,cavity_s,ball_s,other_s,"
+               "total_s,walk_steps_per_point,cavity_tets_per_point,ball_tets_per_point,conflict_tests_per_point,"
+               "small_cavities,large_cavities\n");
 }
 
-void print_csv(const Measurement& m)
+void print_csv(std::FILE* out, const Measurement& m)
 {
-  for(const std::string& warning : cell_count_warnings(m)) std::printf("# WARNING: %s\n", warning.c_str());
+  for(const std::string& warning : cell_count_warnings(m)) std::fprintf(out, "# WARNING: %s\n", warning.c_str());
   for(const Row& row : m.rows) {
     if(row.seconds.empty()) continue;
     const double t = median(row.seconds);
-    std::printf("%zu,%s,%zu,%s,%d,%zu,%.6f,%llu,%.4f,%.1f,%.1f,%.2f,", m.n, m.distribution.c_str(), m.input_points,
-                row.label.c_str(), row.threads, row.seconds.size(), t,
-                static_cast<unsigned long long>(row.finite_cells), static_cast<double>(row.finite_cells) / t / 1e6,
-                mib(row.peak_kib), mib(m.baseline_kib), m.load_before);
+    std::fprintf(out, "%zu,%s,%zu,%s,%d,%zu,%.6f,%llu,%.4f,%.1f,%.1f,%.2f,", m.n, m.distribution.c_str(),
+                 m.input_points, row.label.c_str(), row.threads, row.seconds.size(), t,
+                 static_cast<unsigned long long>(row.finite_cells), static_cast<double>(row.finite_cells) / t / 1e6,
+                 mib(row.peak_kib), mib(m.baseline_kib), m.load_before);
     const double s = speedup(m, row);
-    if(s > 0) std::printf("%.4f", s);
+    if(s > 0) std::fprintf(out, "%.4f", s);
     if(!row.has_phases) {
-      std::printf(",,,,,,,,,,,,,\n");
+      std::fprintf(out, ",,,,,,,,,,,,,\n");
       continue;
     }
     const Phase_split p = phase_split(row);
     const Phase_report& r = row.phases;
-    std::printf(",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f,%llu,%llu\n", p.sort, p.init, p.walk,
-                p.cavity, p.ball, p.other, p.total, per_point(r.walk_steps, r),
-                per_point(r.cavity_tets, r), per_point(r.ball_tets, r),
-                per_point(r.conflict_tests, r), static_cast<unsigned long long>(r.small_cavities),
-                static_cast<unsigned long long>(r.large_cavities));
+    std::fprintf(out, ",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f,%llu,%llu\n", p.sort, p.init,
+                 p.walk, p.cavity, p.ball, p.other, p.total, per_point(r.walk_steps, r), per_point(r.cavity_tets, r),
+                 per_point(r.ball_tets, r), per_point(r.conflict_tests, r),
+                 static_cast<unsigned long long>(r.small_cavities), static_cast<unsigned long long>(r.large_cavities));
   }
-  std::fflush(stdout);
+  std::fflush(out);
 }
 
 } // namespace
@@ -952,15 +960,31 @@ int main(int argc, char** argv)
     return 2;
   }
 
-  print_machine(options);
-  if(options.csv) print_csv_header();
+  const bool table = options.csv_path != "-";
+  std::FILE* csv = nullptr;
+  if(!table)
+    csv = stdout;
+  else if(!options.csv_path.empty() && !(csv = std::fopen(options.csv_path.c_str(), "w"))) {
+    std::fprintf(stderr, "delaunay_benchmark: cannot write %s: %s\n", options.csv_path.c_str(), std::strerror(errno));
+    return 2;
+  }
+
+  if(table) print_machine(stdout, "");
+  if(csv) {
+    print_machine(csv, "# ");
+    print_csv_header(csv);
+  }
   bool all_agree = true;
   for(std::size_t n : options.sizes)
     for(const std::string& distribution : options.distributions) {
       const Measurement m = measure(options, n, distribution);
       all_agree = all_agree && cell_count_warnings(m).empty();
-      if(options.csv) print_csv(m);
-      else print_table(m, options.rounds);
+      if(table) print_table(m, options.rounds);
+      if(csv) print_csv(csv, m);
     }
+  if(csv && csv != stdout && std::fclose(csv) != 0) {
+    std::fprintf(stderr, "delaunay_benchmark: cannot write %s: %s\n", options.csv_path.c_str(), std::strerror(errno));
+    return 2;
+  }
   return all_agree ? 0 : 1;
 }

@@ -16,6 +16,10 @@
 //
 // Gmsh runs in a helper process, mesher_benchmark_gmsh (mesher_benchmark_io.h says why); without Gmsh
 // (libgmsh-dev) at build time there is no helper, and the HXT rows and the fibre surface are left out.
+//
+// --json FILE writes every row with its quality histograms (radius-edge ratio from the report, and the smallest
+// dihedral angle of each tetrahedron); --plot FIGURE writes them to FIGURE's name with .json and has
+// scripts/plot_mesh_quality.py draw every tool's histograms on one figure.
 
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
@@ -326,6 +330,27 @@ CGAL::Fast_mesher_3::Quality_report quality_of(Mesh mesh)
   return CGAL::Fast_mesher_3::quality_report(mesh);
 }
 
+// The figure's second histogram: the smallest of the six dihedral angles of each tetrahedron, in bins of
+// `min_dihedral_bin_degrees` from 0 (a regular tetrahedron's are 70.53 degrees, so the last bin is [70, 72)).
+// Slivers, which the radius-edge ratio does not see, are the first bins.
+constexpr double min_dihedral_bin_degrees = 2;
+
+std::vector<std::size_t> min_dihedral_histogram(const Mesh& mesh)
+{
+  static const int edge_of[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  std::vector<std::size_t> histogram(static_cast<std::size_t>(std::ceil(72 / min_dihedral_bin_degrees)), 0);
+  for(const auto& t : mesh.tetrahedra) {
+    double smallest = 180;
+    for(const auto& e : edge_of)
+      smallest = std::min(smallest, CGAL::Fast_Delaunay_triangulation_3_internal::mesher::dihedral_degrees(
+                                        mesh.points[t[e[0]]].data(), mesh.points[t[e[1]]].data(),
+                                        mesh.points[t[e[2]]].data(), mesh.points[t[e[3]]].data()));
+    const std::size_t bin = static_cast<std::size_t>(smallest / min_dihedral_bin_degrees);
+    ++histogram[std::min(bin, histogram.size() - 1)];
+  }
+  return histogram;
+}
+
 // ------------------------------------------------------------------------------------------------ table
 
 struct Row
@@ -335,6 +360,7 @@ struct Row
   std::vector<double> recovery, refinement, total;
   std::size_t tetrahedra = 0;
   CGAL::Fast_mesher_3::Quality_report quality;
+  std::vector<std::size_t> min_dihedral_histogram;
   std::string failure;
 };
 
@@ -361,16 +387,26 @@ double load_average()
   return load;
 }
 
-void print_header(int rounds)
+std::string utc_now()
 {
   const std::time_t now = std::time(nullptr);
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  return date;
+}
+
+std::string machine()
+{
   cpu_set_t set;
   const int usable = ::sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : -1;
-  std::printf("mesher benchmark, %s\n", date);
-  std::printf("machine: %s, %u hardware threads, %d usable; load average %.2f at the start\n", cpu_model().c_str(),
-              std::thread::hardware_concurrency(), usable, load_average());
+  return cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads, " +
+         std::to_string(usable) + " usable";
+}
+
+void print_header(const std::string& date, int rounds)
+{
+  std::printf("mesher benchmark, %s\n", date.c_str());
+  std::printf("machine: %s; load average %.2f at the start\n", machine().c_str(), load_average());
   std::printf("build:   GCC %s, CGAL %s, TetGen 1.5", __VERSION__, CGAL_VERSION_STR);
   if(gmsh_helper().empty())
     std::printf(", no Gmsh helper (libgmsh-dev absent at build time: no HXT rows, no fibres)");
@@ -418,6 +454,89 @@ void print_table(const std::vector<Row>& rows)
   }
 }
 
+// ------------------------------------------------------------------------------------------------ figure
+
+std::string json_string(const std::string& text)
+{
+  std::string quoted = "\"";
+  for(const char c : text) {
+    if(c == '"' || c == '\\') quoted += '\\';
+    quoted += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
+  }
+  return quoted + "\"";
+}
+
+template <class T>
+std::string json_list(const std::vector<T>& values)
+{
+  std::ostringstream text;
+  text << "[";
+  for(std::size_t i = 0; i < values.size(); ++i) text << (i ? ", " : "") << values[i];
+  text << "]";
+  return text.str();
+}
+
+// What plot_mesh_quality.py reads: the header's date and machine, and every row of the table with its histograms.
+void write_json(const std::string& path, const std::string& date, int rounds, const std::vector<Row>& rows)
+{
+  std::vector<double> radius_edge_bins;
+  for(const Row& r : rows)
+    if(r.failure.empty() && !r.quality.radius_edge_bin_lower.empty())
+      radius_edge_bins = r.quality.radius_edge_bin_lower;
+  std::ofstream out(path);
+  if(!out) throw std::runtime_error("cannot write " + path);
+  out << "{\n  \"benchmark\": \"mesher_benchmark\",\n  \"date\": " << json_string(date)
+      << ",\n  \"machine\": " << json_string(machine()) << ",\n  \"rounds\": " << rounds
+      << ",\n  \"radius_edge_bin_lower\": " << json_list(radius_edge_bins)
+      << ",\n  \"min_dihedral_bin_degrees\": " << min_dihedral_bin_degrees << ",\n  \"rows\": [";
+  for(std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& r = rows[i];
+    out << (i ? "," : "") << "\n    {\"surface\": " << json_string(r.surface->name)
+        << ", \"tool\": " << json_string(r.tool->name) << ", \"threads\": " << r.tool->threads;
+    if(!r.failure.empty()) {
+      out << ", \"failure\": " << json_string(r.failure) << "}";
+      continue;
+    }
+    const CGAL::Fast_mesher_3::Quality_report& q = r.quality;
+    out << ",\n     \"recovery_seconds\": " << median(r.recovery) << ", \"refinement_seconds\": "
+        << median(r.refinement) << ", \"total_seconds\": " << median(r.total) << ", \"tetrahedra\": "
+        << r.tetrahedra << ",\n     \"min_dihedral_degrees\": " << q.min_dihedral_degrees
+        << ", \"max_dihedral_degrees\": " << q.max_dihedral_degrees << ", \"max_radius_edge\": "
+        << q.max_radius_edge << ", \"inverted_tetrahedra\": " << q.inverted_tetrahedra
+        << ", \"boundary_equals_input\": " << (q.boundary_equals_input() ? "true" : "false")
+        << ",\n     \"radius_edge_histogram\": " << json_list(q.radius_edge_histogram)
+        << ",\n     \"min_dihedral_histogram\": " << json_list(r.min_dihedral_histogram) << "}";
+  }
+  out << "\n  ]\n}\n";
+  if(!out) throw std::runtime_error("cannot write " + path);
+}
+
+std::string shell_quoted(const std::string& word)
+{
+  std::string quoted = "'";
+  for(const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// The interpreter and script that draw --plot's figure, both set by CMake (FDT3_PYTHON: Debian's /usr/bin/python3,
+// where python3-matplotlib installs matplotlib).
+std::string plot_command(const std::string& json, const std::string& figure)
+{
+  return shell_quoted(FDT3_PYTHON) + " " + shell_quoted(FDT3_SCRIPTS_DIR "/plot_mesh_quality.py") + " " +
+         shell_quoted(json) + " " + shell_quoted(figure);
+}
+
+// Before the tools run, so that minutes of meshing are not lost for want of matplotlib.
+void check_plotting()
+{
+  const std::string command = shell_quoted(FDT3_PYTHON) + " -c 'import matplotlib' 2>/dev/null";
+  if(std::system(command.c_str()) != 0)
+    throw std::runtime_error(std::string("--plot needs matplotlib for ") + FDT3_PYTHON +
+                             " (Debian: apt-get install python3-matplotlib)");
+  if(::access(FDT3_SCRIPTS_DIR "/plot_mesh_quality.py", R_OK) != 0)
+    throw std::runtime_error("--plot needs " FDT3_SCRIPTS_DIR "/plot_mesh_quality.py, which is not there");
+}
+
 // ------------------------------------------------------------------------------------------------ options
 
 struct Options
@@ -429,6 +548,8 @@ struct Options
   int fibres = 30;
   double fibre_size = 0.04;
   double maximum_size = std::numeric_limits<double>::infinity();
+  std::string json_path; // empty: no data file
+  std::string plot_path; // empty: no figure
 };
 
 std::vector<std::string> split(const std::string& list)
@@ -444,13 +565,18 @@ void print_usage(std::FILE* to)
 {
   std::fprintf(to,
                "usage: mesher_benchmark [--rounds N] [--surfaces A,B,...] [--data DIR] [--fibres N]\n"
-               "                        [--fibre-size H] [--max-size H]\n"
+               "                        [--fibre-size H] [--max-size H] [--json FILE] [--plot FIGURE]\n"
                "  --surfaces  names of CGAL data surfaces (NAME.off in --data) or paths; default\n"
                "              elephant,fandisk,anchor_dense (also extracted: bunny00, couplingdown,\n"
                "              refined_elephant, joint); 'none' for the fibres alone\n"
                "  --data      where CGAL's data meshes are (default: extracted from libcgal-demo by CMake)\n"
                "  --fibres    fibres in the cube (default 30; 0: no fibre surface), --fibre-size its surface size\n"
-               "  --max-size  cap on h for the CGAL surfaces (default: none, h from the surface alone)\n");
+               "  --max-size  cap on h for the CGAL surfaces (default: none, h from the surface alone)\n"
+               "  --json      write every row and its quality histograms (radius-edge ratio, smallest dihedral\n"
+               "              angle per tetrahedron) to FILE\n"
+               "  --plot      draw those histograms of every tool, one row of panels per surface, to FIGURE (.png,\n"
+               "              .svg or .pdf) with scripts/plot_mesh_quality.py; the data go to FIGURE's name with\n"
+               "              .json unless --json names a file\n");
 }
 
 Options parse(int argc, char** argv)
@@ -470,12 +596,21 @@ Options parse(int argc, char** argv)
     else if(a == "--fibres") o.fibres = std::stoi(value());
     else if(a == "--fibre-size") o.fibre_size = std::stod(value());
     else if(a == "--max-size") o.maximum_size = std::stod(value());
+    else if(a == "--json") o.json_path = value();
+    else if(a == "--plot") {
+      o.plot_path = value();
+      const std::string extension = std::filesystem::path(o.plot_path).extension().string();
+      if(extension != ".png" && extension != ".svg" && extension != ".pdf")
+        throw std::invalid_argument("--plot " + o.plot_path + ": the figure must end in .png, .svg or .pdf");
+    }
     else if(a == "--help" || a == "-h") {
       print_usage(stdout);
       std::exit(0);
     } else
       throw std::invalid_argument("unknown option " + a);
   }
+  if(!o.plot_path.empty() && o.json_path.empty())
+    o.json_path = std::filesystem::path(o.plot_path).replace_extension(".json").string();
   return o;
 }
 
@@ -522,13 +657,15 @@ int main(int argc, char** argv)
 {
   try {
     const Options options = parse(argc, argv);
-    print_header(options.rounds);
+    if(!options.plot_path.empty()) check_plotting();
+    const std::string date = utc_now();
+    print_header(date, options.rounds);
     const std::vector<Benchmark_surface> surfaces = load_surfaces(options);
     print_surfaces(surfaces);
     const std::vector<Tool> all_tools = tools();
     std::vector<Row> rows;
     for(const Benchmark_surface& s : surfaces)
-      for(const Tool& t : all_tools) rows.push_back(Row{&s, &t, {}, {}, {}, 0, {}, ""});
+      for(const Tool& t : all_tools) rows.push_back(Row{&s, &t, {}, {}, {}, 0, {}, {}, ""});
 
     for(int round = 0; round < options.rounds; ++round)
       for(Row& row : rows) {
@@ -540,7 +677,10 @@ int main(int argc, char** argv)
           row.total.push_back(run.total);
           row.tetrahedra = run.mesh.tetrahedra.size();
           // The report is slow (std::map of facets): once, on the last round's mesh.
-          if(round + 1 == options.rounds) row.quality = quality_of(std::move(run.mesh));
+          if(round + 1 == options.rounds) {
+            row.min_dihedral_histogram = min_dihedral_histogram(run.mesh);
+            row.quality = quality_of(std::move(run.mesh));
+          }
         } catch(const std::exception& e) {
           row.failure = e.what();
         } catch(...) {
@@ -553,6 +693,17 @@ int main(int argc, char** argv)
     std::printf("load average %.2f at the end (above the usable cores: other work competed with the tools)\n",
                 load_average());
     std::filesystem::remove_all(scratch_directory());
+    if(!options.json_path.empty()) write_json(options.json_path, date, options.rounds, rows);
+    if(!options.plot_path.empty()) {
+      std::fflush(stdout);
+      const std::string command = plot_command(options.json_path, options.plot_path);
+      const int status = std::system(command.c_str());
+      if(status != 0) {
+        std::fprintf(stderr, "mesher_benchmark: the figure was not drawn: %s failed (status %d); the data are in %s\n",
+                     command.c_str(), status, options.json_path.c_str());
+        return 1;
+      }
+    }
   } catch(const std::exception& e) {
     std::fprintf(stderr, "mesher_benchmark: %s\n", e.what());
     print_usage(stderr);
