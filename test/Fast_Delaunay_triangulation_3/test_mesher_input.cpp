@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mesher_checks.h"
 #include "mesher_shapes.h"
 
 #include <cmath>
@@ -222,6 +223,100 @@ TEST(MesherInput, ReadsOffStlObjAndSeveralFiles)
     EXPECT_EQ(mesh.triangles.size(), outer.triangles.size() + inner.triangles.size()) << second;
   }
   for(const std::string& path : {off, obj, stl}) std::remove(path.c_str());
+}
+
+// A closed surface facing inward (each triangle reversed) is refused, alone
+// or nested in a good one, with the surface's number.
+TEST(MesherInput, InsideOutSurfacesAreRefused)
+{
+  Surface inside_out = mesher_shapes::cube();
+  for(auto& t : inside_out.triangles) std::swap(t[1], t[2]);
+  std::string message = refusal_of(inside_out);
+  EXPECT_TRUE(contains(message, "surface 1") && contains(message, "inside out")) << message;
+  Surface inner = mesher_shapes::cube(0.25, 0.75);
+  for(auto& t : inner.triangles) std::swap(t[1], t[2]);
+  message = refusal_of(mesher_shapes::combine(mesher_shapes::cube(), inner));
+  EXPECT_TRUE(contains(message, "surface 2") && contains(message, "inside out")) << message;
+  // Reversed back, the nested pair is meshed: two subdomains.
+  for(auto& t : inner.triangles) std::swap(t[1], t[2]);
+  const fm::Tetrahedral_mesh mesh = fm::mesh_surfaces(mesher_shapes::combine(mesher_shapes::cube(), inner).points,
+                                                      mesher_shapes::combine(mesher_shapes::cube(), inner).triangles);
+  EXPECT_EQ(mesh.number_of_subdomains, 2);
+}
+
+// Far from 1 in either direction, the mesh is the unit-size mesh scaled:
+// TetGen and the sizes see the input scaled by a power of two (exact), and
+// the input points come back bit for bit.
+TEST(MesherInput, HugeAndTinyCoordinatesAreMeshed)
+{
+  const fm::Tetrahedral_mesh unit = fm::mesh_surfaces(mesher_shapes::cube().points, mesher_shapes::cube().triangles);
+  for(const double scale : {0x1p330, 0x1p1000, 0x1p-330, 0x1p-1000, 1e100, 1e300, 1e-100, 1e-300}) {
+    Surface s = mesher_shapes::cube();
+    for(auto& p : s.points)
+      for(double& x : p) x *= scale;
+    fm::Tetrahedral_mesh mesh;
+    ASSERT_NO_THROW(mesh = fm::mesh_surfaces(s.points, s.triangles)) << "scale " << scale;
+    mesher_checks::expect_all_positive(mesh);
+    mesher_checks::expect_boundary_is_input(mesh, s);
+    int exponent;
+    const bool power_of_two = std::frexp(scale, &exponent) == 0.5;
+    if(power_of_two) { // every coordinate exactly the unit mesh's, scaled
+      ASSERT_EQ(mesh.points.size(), unit.points.size()) << "scale " << scale;
+      ASSERT_EQ(mesh.tetrahedra, unit.tetrahedra) << "scale " << scale;
+      for(std::size_t i = 0; i < mesh.points.size(); ++i)
+        for(int a = 0; a < 3; ++a) ASSERT_EQ(mesh.points[i][a], unit.points[i][a] * scale) << "scale " << scale;
+    }
+  }
+}
+
+TEST(MesherInput, CoordinatesNoCommonScaleHoldsAreRefused)
+{
+  Surface s = mesher_shapes::cube();
+  for(auto& p : s.points)
+    for(double& x : p) x *= 1e300;
+  s.points[0] = {1e-300, 1e-300, 1e-300};
+  const std::string message = refusal_of(s);
+  EXPECT_TRUE(contains(message, "point #0") && contains(message, "common scale")) << message;
+}
+
+// The defects of an OFF file named with their line, not CGAL's generic
+// "cannot read".
+TEST(MesherInput, OffDefectsAreNamedWithTheirLine)
+{
+  const Surface cube = mesher_shapes::cube();
+  struct Case
+  {
+    std::string name, header, bad_vertex, bad_face, expected;
+  };
+  const Case cases[] = {
+      {"nan", "8 12 0", "nan 0 0", "", "line 3: vertex 0 has coordinate 'nan'"},
+      {"inf", "8 12 0", "0 inf 0", "", "line 3: vertex 0 has coordinate 'inf'"},
+      {"huge", "8 12 0", "0 0 1e400", "", "line 3: vertex 0 has coordinate '1e400', not a finite double"},
+      {"word", "8 12 0", "0 zero 0", "", "vertex 0 has coordinate 'zero', not a number"},
+      {"negative", "-8 12 0", "", "", "line 2: the number of vertices is '-8'"},
+      {"trillion", "1000000000000 12 0", "", "", "claims 1000000000000 vertices"},
+      {"index", "8 12 0", "", "3 0 1 8", "refers to vertex '8', not one of the 8 vertices"},
+      {"short", "8 13 0", "", "", "the file ends before face 12 of 13"},
+  };
+  for(const Case& c : cases) {
+    const std::string path = temporary("defect_" + c.name + ".off");
+    {
+      std::ofstream out(path);
+      out << "OFF\n" << c.header << "\n";
+      for(std::size_t i = 0; i < cube.points.size(); ++i) {
+        if(i == 0 && !c.bad_vertex.empty()) out << c.bad_vertex << "\n";
+        else out << cube.points[i][0] << ' ' << cube.points[i][1] << ' ' << cube.points[i][2] << "\n";
+      }
+      for(std::size_t t = 0; t < cube.triangles.size(); ++t) {
+        if(t == 0 && !c.bad_face.empty()) out << c.bad_face << "\n";
+        else out << "3 " << cube.triangles[t][0] << ' ' << cube.triangles[t][1] << ' ' << cube.triangles[t][2] << "\n";
+      }
+    }
+    const std::string message = refusal_of_file(path);
+    EXPECT_TRUE(contains(message, c.expected)) << c.name << ": " << message;
+    EXPECT_TRUE(contains(message, path)) << c.name << ": " << message;
+    std::remove(path.c_str());
+  }
 }
 
 } // namespace test_mesher_input

@@ -38,6 +38,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Sizing.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Surface_input.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Unit_scaling.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Volume_colouring.h>
 
 #include <algorithm>
@@ -109,9 +110,11 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0)
 }
 
 // `on_mesh(cm)` sees the final constrained mesh before it is extracted.
+// `soup` is at the unit scale of `scaling` (Unit_scaling.h); the mesh
+// handed on and returned is at the input's.
 template <class On_mesh>
-Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& options, Mesher_statistics& stats,
-                           On_mesh on_mesh)
+Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling, const Mesher_options& options,
+                           Mesher_statistics& stats, On_mesh on_mesh)
 {
   typedef std::chrono::steady_clock Clock;
   Clock::time_point t0 = Clock::now();
@@ -130,7 +133,7 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& optio
   Clock::time_point t1 = Clock::now();
   flag_constrained_facets(soup, cm);
   colour_volumes(cm);
-  surface_sizes(soup, options.maximum_size, cm);
+  surface_sizes(soup, scaling.to_unit(options.maximum_size), cm);
   stats.colouring_seconds = seconds_since(t1);
 
   t1 = Clock::now();
@@ -156,6 +159,7 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Mesher_options& optio
     for(const auto& attempt : pass.attempts) stats.partitioned_attempts += attempt.partitions > 1 ? 1 : 0;
   }
   stats.refinement_seconds = seconds_since(t1);
+  scaling.unscale(cm);
   on_mesh(static_cast<const Constrained_mesh&>(cm));
   Tetrahedral_mesh mesh = extract_mesh(cm, soup);
   stats.total_seconds = seconds_since(t0);
@@ -168,10 +172,14 @@ Tetrahedral_mesh read_and_mesh(Read_soup read_soup, const Mesher_options& option
                                On_mesh on_mesh)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  const Surface_soup soup = read_soup();
+  Surface_soup soup = read_soup();
+  const Unit_scaling scaling(soup);
+  scaling.scale(soup);
   Mesher_statistics stats;
   stats.input_seconds = seconds_since(t0);
-  Tetrahedral_mesh mesh = mesh_soup(soup, options, stats, [&](const Constrained_mesh& cm) { on_mesh(cm, soup); });
+  Tetrahedral_mesh mesh = mesh_soup(soup, scaling, options, stats, [&](const Constrained_mesh& cm) {
+    on_mesh(cm, soup);
+  });
   if(statistics) *statistics = stats;
   return mesh;
 }

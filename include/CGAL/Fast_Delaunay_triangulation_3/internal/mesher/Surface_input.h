@@ -25,7 +25,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <fstream>
 #include <map>
@@ -99,6 +101,101 @@ inline std::map<Edge, std::vector<Edge_use>> edge_uses(const Surface_soup& soup)
   return uses;
 }
 
+// The words of a text file with their line numbers; `#` starts a comment.
+class Word_reader
+{
+public:
+  explicit Word_reader(std::istream& in) : in_(in) {}
+  // The next word (false at the end); line() is its line.
+  bool next(std::string& word)
+  {
+    while(position_ >= words_.size()) {
+      std::string text;
+      if(!std::getline(in_, text)) return false;
+      ++line_;
+      text = text.substr(0, text.find('#'));
+      std::istringstream split(text);
+      words_.clear();
+      position_ = 0;
+      for(std::string w; split >> w;) words_.push_back(w);
+    }
+    word = words_[position_++];
+    return true;
+  }
+  // Drops the rest of the current line.
+  void skip_line() { position_ = words_.size(); }
+  std::size_t line() const { return line_; }
+
+private:
+  std::istream& in_;
+  std::vector<std::string> words_;
+  std::size_t position_ = 0, line_ = 0;
+};
+
+// CGAL's reader answers every defect of an OFF file with one "cannot read";
+// this pass over an ASCII OFF file names the first defect and its line: the
+// counts, a coordinate that is not a finite double (nan, inf, 1e400), a face
+// index out of range.  Other headers (COFF, NOFF, binary) are left to CGAL.
+inline void check_off_file(const std::string& path)
+{
+  std::ifstream in(path);
+  Word_reader words(in);
+  std::string word;
+  auto where = [&]() { return "'" + path + "', line " + std::to_string(words.line()) + ": "; };
+  if(!words.next(word) || word != "OFF") return;
+  std::uintmax_t file_size = 0;
+  {
+    std::ifstream size_probe(path, std::ios::binary | std::ios::ate);
+    file_size = static_cast<std::uintmax_t>(size_probe.tellg());
+  }
+  // A count: digits only, at most what the file's bytes can hold (a vertex
+  // takes at least 6 bytes, "0 0 0\n", a face 8).
+  auto count = [&](const char* what, std::uintmax_t bytes_each) -> std::uintmax_t {
+    if(!words.next(word)) fail(where() + "the file ends before the number of " + what);
+    if(word == "BINARY") return std::uintmax_t(-1);
+    if(word.find_first_not_of("0123456789") != std::string::npos)
+      fail(where() + "the number of " + what + " is '" + word + "', not a count");
+    const std::uintmax_t n = word.size() > 18 ? std::uintmax_t(-2) : std::stoull(word);
+    if(n > file_size / bytes_each)
+      fail(where() + "the file claims " + word + " " + what + ", more than its " + std::to_string(file_size) +
+           " bytes can hold");
+    return n;
+  };
+  const std::uintmax_t vertices = count("vertices", 6);
+  if(vertices == std::uintmax_t(-1)) return; // OFF BINARY
+  const std::uintmax_t faces = count("faces", 8);
+  count("edges", 1);
+  words.skip_line();
+  for(std::uintmax_t v = 0; v < vertices; ++v)
+    for(int a = 0; a < 3; ++a) {
+      if(!words.next(word))
+        fail(where() + "the file ends in vertex " + std::to_string(v) + " of " + std::to_string(vertices));
+      errno = 0;
+      char* end = nullptr;
+      const double x = std::strtod(word.c_str(), &end);
+      if(end != word.c_str() + word.size())
+        fail(where() + "vertex " + std::to_string(v) + " has coordinate '" + word + "', not a number");
+      if(!std::isfinite(x) || errno == ERANGE)
+        fail(where() + "vertex " + std::to_string(v) + " has coordinate '" + word +
+             "', not a finite double (NaN, infinite or out of range)");
+    }
+  for(std::uintmax_t f = 0; f < faces; ++f) {
+    if(!words.next(word))
+      fail(where() + "the file ends before face " + std::to_string(f) + " of " + std::to_string(faces));
+    if(word.find_first_not_of("0123456789") != std::string::npos || word.size() > 9)
+      fail(where() + "face " + std::to_string(f) + " starts with '" + word + "', not a number of vertices");
+    const std::size_t corners = std::stoul(word);
+    for(std::size_t k = 0; k < corners; ++k) {
+      if(!words.next(word)) fail(where() + "the file ends in face " + std::to_string(f));
+      const bool digits = !word.empty() && word.find_first_not_of("0123456789") == std::string::npos;
+      if(!digits || word.size() > 18 || std::stoull(word) >= vertices)
+        fail(where() + "face " + std::to_string(f) + " refers to vertex '" + word + "', not one of the " +
+             std::to_string(vertices) + " vertices");
+    }
+    words.skip_line(); // colours, if any
+  }
+}
+
 } // namespace surface_detail
 
 // Appends the polygon soup of one file (any format CGAL::IO::read_polygon_soup
@@ -112,6 +209,8 @@ inline void read_soup_file(const std::string& path, std::vector<std::array<doubl
   std::ifstream probe(path, std::ios::binary);
   if(!probe) surface_detail::fail("cannot open '" + path + "'");
   if(probe.peek() == std::ifstream::traits_type::eof()) surface_detail::fail("'" + path + "' is an empty file");
+  const std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
+  if(extension == ".off" || extension == ".OFF") surface_detail::check_off_file(path);
   if(!IO::read_polygon_soup(path, file_points, file_polygons, parameters::verbose(false)))
     surface_detail::fail("cannot read '" + path + "' as a polygon soup (OFF, STL, OBJ, PLY)");
   const std::size_t offset = points.size();
@@ -259,6 +358,52 @@ inline void check_self_intersections(const Surface_soup& soup)
                        surface_detail::list_of(described));
 }
 
+// Every closed surface must face outward (its triangles counterclockwise
+// seen from outside), nested ones included: each bounds a volume of its own.
+// The volume a closed surface encloses, summed over its triangles as cones
+// from one of its points, is positive then; inside out, it is negative.
+// (A closed surface without self-intersections encloses a volume far above
+// the rounding of that sum.)  The differences are scaled by a power of two
+// that brings the coordinates below 1, so that cubes of 1e200 or 1e-200 do
+// not overflow or vanish.
+inline void check_outward_orientation(const Surface_soup& soup)
+{
+  double largest = 0;
+  for(const auto& p : soup.points)
+    for(double x : p) largest = std::max(largest, std::abs(x));
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  std::vector<double> volume(soup.number_of_surfaces + 1, 0);
+  std::vector<const std::array<double, 3>*> apex(soup.number_of_surfaces + 1, nullptr);
+  std::vector<std::size_t> first(soup.number_of_surfaces + 1, 0);
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    const int s = soup.surface[t];
+    const auto& a = soup.points[soup.triangles[t][0]];
+    const auto& b = soup.points[soup.triangles[t][1]];
+    const auto& c = soup.points[soup.triangles[t][2]];
+    if(apex[s] == nullptr) {
+      apex[s] = &a;
+      first[s] = t;
+    }
+    const auto& o = *apex[s];
+    double u[3], v[3], w[3];
+    for(int k = 0; k < 3; ++k) {
+      u[k] = std::ldexp(a[k], -exponent) - std::ldexp(o[k], -exponent);
+      v[k] = std::ldexp(b[k], -exponent) - std::ldexp(o[k], -exponent);
+      w[k] = std::ldexp(c[k], -exponent) - std::ldexp(o[k], -exponent);
+    }
+    volume[s] += (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                  u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+  }
+  for(int s = 1; s <= soup.number_of_surfaces; ++s)
+    if(!(volume[s] > 0)) {
+      std::ostringstream message;
+      message << "surface " << s << " (the one with triangle #" << first[s] << ") is inside out: its triangles face "
+              << "inward (the volume it encloses comes out negative); reverse their orientation";
+      surface_detail::fail(message.str());
+    }
+}
+
 // The checks, from the cheapest to the costliest, then the surface numbers.
 inline Surface_soup checked(Surface_soup soup)
 {
@@ -266,6 +411,7 @@ inline Surface_soup checked(Surface_soup soup)
   check_closed_oriented_manifold(soup);
   check_self_intersections(soup);
   number_surfaces(soup);
+  check_outward_orientation(soup);
   return soup;
 }
 
