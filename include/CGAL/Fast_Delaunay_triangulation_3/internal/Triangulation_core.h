@@ -97,6 +97,7 @@ public:
     lower.start(mesh);
     hint_ = 0;
     walk_starts_.clear();
+    tet_of_vertex_.clear();
   }
 
   // Takes over a triangulation built elsewhere (a file read by
@@ -148,9 +149,10 @@ public:
       throw std::length_error("Fast_Delaunay_triangulation_3: more than 2^31 - 2 vertices");
 
     const Clock::time_point t0 = Clock::now();
-    // The grid's tetrahedra would be valid walk starts still, but far from
-    // their cells once the bulk insertion reuses the slots.
+    // The bulk insertion remakes the tetrahedra: one-point insertions after
+    // it start their grid and tetrahedra of vertices afresh.
     walk_starts_.clear();
+    tet_of_vertex_.clear();
     const std::size_t first_new = vertex_slots();
     Brio_order order = brio_order(xyz, n, seed, partitions);
     mesh.vertices.resize(first_new + n);
@@ -269,7 +271,9 @@ public:
     Delaunay_kernel<> kernel = sequential_kernel(scratch);
     Tet_id hint = start < mesh.number_of_slots() && mesh.is_live(start) ? start : hint_;
     if(!mesh.is_live(hint)) hint = mesh.first_live_tet();
-    hint = walk_starts_.start(mesh, p, hint, mesh.live_vertices(), box_lo_, box_hi_);
+    hint = walk_starts_.start(mesh, p, hint, mesh.live_vertices(), box_lo_, box_hi_, [this](Vertex_id w) {
+      return w < tet_of_vertex_.size() ? tet_of_vertex_[w] : Tet_id(-1);
+    });
     Vertex_id existing = ghost_vertex;
     const bool duplicate = kernel.insert(v, hint, existing) == Insertion_result::duplicate;
     hint_ = hint;
@@ -280,7 +284,13 @@ public:
       return existing;
     }
     ball.assign(scratch.ball.begin(), scratch.ball.end());
-    walk_starts_.remember(p, ball.front());
+    walk_starts_.remember(p, v);
+    // Every vertex of a deleted tetrahedron is one of the ball's: pointing
+    // them at the ball keeps tet_of_vertex_ exact through single insertions.
+    if(tet_of_vertex_.size() < vertex_slots()) tet_of_vertex_.resize(2 * vertex_slots(), Tet_id(-1));
+    for(Tet_id t : ball)
+      for(int i = 0; i < 4; ++i)
+        if(mesh.vertex(t, i) != ghost_vertex) tet_of_vertex_[mesh.vertex(t, i)] = t;
     finish_single_insertion(scratch);
     return v;
   }
@@ -761,6 +771,7 @@ private:
   // One-point insertions: where their walks start, and the buffers they
   // reuse (the kernel's and the new cells').
   Walk_start_grid walk_starts_;
+  std::vector<Tet_id> tet_of_vertex_; // checked before use: other updates do not keep it
   Insertion_scratch single_scratch_;
   std::vector<Tet_id> single_ball_;
   double box_lo_[3], box_hi_[3];

@@ -6,15 +6,19 @@
 // insert(p) called in a loop gets the points in the caller's order, random
 // in space for most callers, and a walk from the previous insertion crosses
 // about n^(1/3) tetrahedra, one cache miss each.  This grid over the
-// filters' box remembers, per grid cell, a tetrahedron that the last
-// insertion in that cell made; a walk starts there (or at the caller's hint
-// when that is closer), a few steps from its point.
+// filters' box remembers, per grid cell, the vertex that the last insertion
+// in that cell made; a walk starts at a tetrahedron of that vertex (or at
+// the caller's hint when that is closer), a few steps from its point.
 //
-// Any live tetrahedron is a correct start (the walk is exact from anywhere),
-// so an entry whose tetrahedron was deleted, or whose slot now holds another
-// tetrahedron, costs steps, never correctness.  The grid is rebuilt empty
-// when the box grows or when the vertices outnumber its cells eightfold
-// (geometric growth: O(1) amortised per point); it refills as points come.
+// The tetrahedron of a vertex comes from the caller, which keeps one per
+// vertex up to date where it can and may be wrong elsewhere: an answer is
+// used only if it is live and has the vertex.  (Remembering tetrahedra
+// instead failed: their slots are soon reused by tetrahedra anywhere, and
+// 58% of a loop's time went to walks from them.)  The grid is rebuilt from
+// all vertices when they outnumber its cells eightfold or when the box has
+// doubled along an axis (geometric growth: O(1) amortised per point);
+// points beyond its box fall in its border cells meanwhile.  An empty cell
+// borrows from one of its six neighbours.
 
 #ifndef CGAL_FDT3_INTERNAL_WALK_START_GRID_H
 #define CGAL_FDT3_INTERNAL_WALK_START_GRID_H
@@ -42,71 +46,90 @@ public:
     resolution_ = 0;
   }
 
-  // The tetrahedron to start the walk to p from: the grid's entry for p's
-  // cell, or `hint`, whichever has its vertex 0 nearer to p (the grid's only
-  // if it is live).  `vertices` and the box [lo, hi] are the triangulation's
-  // now; the grid is rebuilt if they outgrew it.
+  // The tetrahedron to start the walk to p from: one of the grid's vertex
+  // for p's cell (tet_of(v): a tetrahedron that may have v), or `hint`,
+  // whichever is nearer to p by its vertex 0.  `vertices` and the box
+  // [lo, hi] are the triangulation's now; the grid is rebuilt if they
+  // outgrew it.
+  template <class Tet_of_vertex>
   Tet_id start(const Flat_storage& mesh, const double* p, Tet_id hint, std::size_t vertices, const double* lo,
-               const double* hi)
+               const double* hi, Tet_of_vertex tet_of)
   {
     fit(mesh, vertices, lo, hi);
-    const Tet_id remembered = starts_[cell_of(p)];
-    if(remembered >= mesh.number_of_slots() || !mesh.is_live(remembered)) return hint;
-    return squared_distance(mesh.point(mesh.vertex(remembered, 0)), p) <
-                   squared_distance(mesh.point(mesh.vertex(hint, 0)), p)
-               ? remembered
-               : hint;
+    int k[3];
+    cell_coordinates(p, k);
+    Vertex_id v = starts_[index(k)];
+    for(int neighbour = 0; v == no_vertex && neighbour < 6; ++neighbour) {
+      int n[3] = {k[0], k[1], k[2]};
+      n[neighbour / 2] += neighbour % 2 ? 1 : -1;
+      if(n[neighbour / 2] >= 0 && n[neighbour / 2] < resolution_) v = starts_[index(n)];
+    }
+    if(v == no_vertex || v >= mesh.vertices.size()) return hint;
+    const Tet_id t = tet_of(v);
+    if(t >= mesh.number_of_slots() || !mesh.is_live(t) || index_of_vertex(mesh, t, v) < 0) return hint;
+    return squared_distance(mesh.point(v), p) < squared_distance(mesh.point(mesh.vertex(hint, 0)), p) ? t : hint;
   }
 
-  // The insertion of p made tetrahedron t (one of its ball).
-  void remember(const double* p, Tet_id t)
+  // The insertion of p made vertex v.
+  void remember(const double* p, Vertex_id v)
   {
-    if(resolution_ > 0) starts_[cell_of(p)] = t;
+    if(resolution_ > 0) starts_[cell_of(p)] = v;
   }
 
 private:
+  static int index_of_vertex(const Flat_storage& mesh, Tet_id t, Vertex_id v)
+  {
+    for(int i = 0; i < 4; ++i)
+      if(mesh.vertex(t, i) == v) return i;
+    return -1;
+  }
+
   static double squared_distance(const double* a, const double* b)
   {
     const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
     return dx * dx + dy * dy + dz * dz;
   }
 
-  // A rebuilt grid takes over the old one's live entries, each in the cell
-  // of its tetrahedron's vertex 0, so that the walks stay short after the
-  // box grows.
   void fit(const Flat_storage& mesh, std::size_t vertices, const double* lo, const double* hi)
   {
-    const bool same_box = resolution_ > 0 && std::equal(lo, lo + 3, lo_) && std::equal(hi, hi + 3, hi_);
-    if(same_box && vertices <= 8 * vertices_per_cell * starts_.size()) return;
+    bool fits = resolution_ > 0 && vertices <= 8 * vertices_per_cell * starts_.size();
+    for(int a = 0; a < 3 && fits; ++a) fits = hi[a] - lo[a] <= 2 * (hi_[a] - lo_[a]);
+    if(fits) return;
     const double cells = std::max<double>(1.0, static_cast<double>(vertices) / vertices_per_cell);
-    const int old_resolution = resolution_;
     resolution_ = std::max(1, std::min(1024, static_cast<int>(std::cbrt(cells))));
-    std::vector<Tet_id> old_starts;
-    if(old_resolution > 0) old_starts.swap(starts_);
-    starts_.assign(static_cast<std::size_t>(resolution_) * resolution_ * resolution_, no_start);
+    starts_.assign(static_cast<std::size_t>(resolution_) * resolution_ * resolution_, no_vertex);
     for(int a = 0; a < 3; ++a) {
       lo_[a] = lo[a];
       hi_[a] = hi[a];
       const double extent = hi[a] - lo[a];
       scale_[a] = extent > 0 ? resolution_ / extent : 0;
     }
-    for(Tet_id t : old_starts)
-      if(t < mesh.number_of_slots() && mesh.is_live(t)) starts_[cell_of(mesh.point(mesh.vertex(t, 0)))] = t;
+    for(Vertex_id v = 0; v < mesh.vertices.size(); ++v)
+      if(!mesh.is_dead(v)) starts_[cell_of(mesh.point(v))] = v;
   }
 
+  void cell_coordinates(const double* p, int k[3]) const
+  {
+    // Points beyond the box (and on its far side) land in the border cells.
+    for(int a = 0; a < 3; ++a) {
+      const double x = (p[a] - lo_[a]) * scale_[a];
+      k[a] = x < 0 ? 0 : x >= resolution_ ? resolution_ - 1 : static_cast<int>(x);
+    }
+  }
+  std::size_t index(const int k[3]) const
+  {
+    return (static_cast<std::size_t>(k[0]) * resolution_ + static_cast<std::size_t>(k[1])) * resolution_ +
+           static_cast<std::size_t>(k[2]);
+  }
   std::size_t cell_of(const double* p) const
   {
-    std::size_t index = 0;
-    for(int a = 0; a < 3; ++a) {
-      // Points on the box's far side (and rounding) land in the last cell.
-      const int k = std::min(resolution_ - 1, std::max(0, static_cast<int>((p[a] - lo_[a]) * scale_[a])));
-      index = index * static_cast<std::size_t>(resolution_) + static_cast<std::size_t>(k);
-    }
-    return index;
+    int k[3];
+    cell_coordinates(p, k);
+    return index(k);
   }
 
-  static constexpr Tet_id no_start = std::numeric_limits<Tet_id>::max();
-  std::vector<Tet_id> starts_;
+  static constexpr Vertex_id no_vertex = std::numeric_limits<Vertex_id>::max();
+  std::vector<Vertex_id> starts_;
   int resolution_ = 0;
   double lo_[3] = {0, 0, 0}, hi_[3] = {0, 0, 0}, scale_[3] = {0, 0, 0};
 };
