@@ -2,7 +2,7 @@
 """The Python side-by-side: fast_delaunay_3.delaunay beside scipy.spatial.Delaunay and Gmsh's tetrahedralize.
 
 usage: PYTHONPATH=build/python /usr/bin/python3 benchmark/python/bench_delaunay.py [--n 1e5,1e6] [--rounds 3]
-           [--seed 1] [--engines scipy,ours-1,ours-2,gmsh] [--plot FIGURE.png]
+           [--seed 1] [--engines scipy,ours-1,ours-2,c++-1,c++-2,gmsh] [--cxx-benchmark PROGRAM] [--plot FIGURE.png]
 
 Every engine triangulates the same array: n points uniform in the unit cube, float64, from numpy's default_rng(seed).
 Every run is a fresh child process (this script with --child) that makes the array, times the one call and reports
@@ -15,6 +15,9 @@ The engines:
   scipy   scipy.spatial.Delaunay(points) (Qhull), 1 thread
   ours-1  fast_delaunay_3.delaunay(points, threads=1), the module of this repository, from PYTHONPATH
   ours-2  the same with threads=2
+  c++-1   the same engine called from C++: delaunay_benchmark --engines fast (a run of it, its own uniform points,
+          std::mt19937_64), the reference of the binding's cost: ours-1 / c++-1 is what Python adds
+  c++-2   delaunay_benchmark --engines fast-par --threads 2
   gmsh    gmsh.model.mesh.tetrahedralize(points.ravel()) with General.NumThreads = 1; it leaves out tetrahedra near
           the convex hull (on uniform points its tetrahedra cover 98.8% of the hull's volume at 2e4 points), so
           its count is not compared
@@ -35,14 +38,21 @@ import subprocess
 import sys
 import time
 
-ENGINES = ["scipy", "ours-1", "ours-2", "gmsh"]
-MODULE_OF = {"scipy": "scipy", "ours-1": "fast_delaunay_3", "ours-2": "fast_delaunay_3", "gmsh": "gmsh"}
+ENGINES = ["scipy", "ours-1", "ours-2", "c++-1", "c++-2", "gmsh"]
+MODULE_OF = {"scipy": "scipy", "ours-1": "fast_delaunay_3", "ours-2": "fast_delaunay_3", "c++-1": None,
+             "c++-2": None, "gmsh": "gmsh"}
 DESCRIPTION = {
     "scipy": "scipy.spatial.Delaunay",
     "ours-1": "fast_delaunay_3, 1 thread",
     "ours-2": "fast_delaunay_3, 2 threads",
+    "c++-1": "(C++ engine, 1 thread)",
+    "c++-2": "(C++ engine, 2 threads)",
     "gmsh": "gmsh tetrahedralize",
 }
+# delaunay_benchmark's engine and thread count for the C++ rows.
+CXX_ENGINE = {"c++-1": ("fast", 1), "c++-2": ("fast-par", 2)}
+CXX_BENCHMARK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "benchmark",
+                             "Fast_Delaunay_triangulation_3", "delaunay_benchmark")
 
 
 # ------------------------------------------------------------------------------------------------ child
@@ -100,8 +110,23 @@ def child(engine, n, seed):
     print(json.dumps({"seconds": seconds, "tetrahedra": tetrahedra, "peak_kib": peak_kib()}))
 
 
-def run_child(engine, n, seed):
+def run_cxx(engine, n, program):
+    """{seconds, tetrahedra, peak_kib} of one delaunay_benchmark run (its medians of one round), or {error}."""
+    name, threads = CXX_ENGINE[engine]
+    command = [program, "--n", str(n), "--engines", name, "--threads", str(threads), "--rounds", "1", "--csv", "-"]
+    done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    rows = [line.split(",") for line in done.stdout.splitlines() if line and not line.startswith("#")]
+    if done.returncode != 0 or len(rows) != 2:
+        return {"error": "%s: status %d" % (program, done.returncode)}
+    row = dict(zip(rows[0], rows[1]))
+    return {"seconds": float(row["median_seconds"]), "tetrahedra": int(row["finite_cells"]),
+            "peak_kib": float(row["peak_mib"]) * 1024}
+
+
+def run_child(engine, n, seed, cxx_program=CXX_BENCHMARK):
     """{seconds, tetrahedra, peak_kib} of one run in a fresh interpreter, or {error}."""
+    if engine in CXX_ENGINE:
+        return run_cxx(engine, n, cxx_program)
     command = [sys.executable, os.path.abspath(__file__), "--child", engine, str(n), str(seed)]
     done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     if done.returncode != 0:
@@ -198,7 +223,7 @@ def measure(args, engines, n, load):
     runs = {e: [] for e in engines}
     for _ in range(args.rounds):
         for e in engines:
-            runs[e].append(run_child(e, n, args.seed))
+            runs[e].append(run_child(e, n, args.seed, args.cxx_benchmark))
     rows = []
     for e in engines:
         good = [r for r in runs[e] if "error" not in r]
@@ -228,6 +253,12 @@ def print_table(n, baseline, rows, load):
         print("%-28s %10s %9.3f %12s %8.2f %10s %9.0f" % (
             DESCRIPTION[r["engine"]], "{:,}".format(n), r["seconds"], "{:,}".format(r["tetrahedra"]),
             r["tetrahedra"] / r["seconds"] / 1e6, ratio, r["peak_mib"]))
+    by_engine = {r["engine"]: r for r in rows if "seconds" in r}
+    for threads in (1, 2):
+        ours, cxx = by_engine.get("ours-%d" % threads), by_engine.get("c++-%d" % threads)
+        if ours and cxx:
+            print("binding cost, %d thread%s: Python %.3f s / C++ %.3f s = %.2fx" % (
+                threads, "s" if threads > 1 else "", ours["seconds"], cxx["seconds"], ours["seconds"] / cxx["seconds"]))
     sys.stdout.flush()
 
 
@@ -240,6 +271,7 @@ def warnings_of(rows):
             warnings.append("%s failed: %s" % (DESCRIPTION[r["engine"]], error))
         if r.get("counts_vary"):
             warnings.append("%s found different numbers of tetrahedra in different rounds" % DESCRIPTION[r["engine"]])
+        # The C++ rows triangulate other points (std::mt19937_64): their counts differ a little.
         compared = scipy_row and r["engine"].startswith("ours") and "seconds" in r
         if compared and r["tetrahedra"] != scipy_row["tetrahedra"]:
             warnings.append("{} has {:,} tetrahedra, scipy {:,}".format(DESCRIPTION[r["engine"]], r["tetrahedra"],
@@ -255,7 +287,8 @@ def plot(path, rows, date, machine):
                  % sys.executable)
     matplotlib.use("Agg")
     import matplotlib.pyplot as pyplot
-    colours = {"scipy": "tab:orange", "ours-1": "tab:blue", "ours-2": "tab:green", "gmsh": "tab:purple"}
+    colours = {"scipy": "tab:orange", "ours-1": "tab:blue", "ours-2": "tab:green", "c++-1": "lightsteelblue",
+               "c++-2": "palegreen", "gmsh": "tab:purple"}
     sizes = sorted({r["n"] for r in rows})
     engines = [e for e in ENGINES if any(r["engine"] == e and "seconds" in r for r in rows)]
     figure, (time_axis, rate_axis, memory_axis) = pyplot.subplots(1, 3, figsize=(15, 4.2), layout="constrained")
@@ -303,6 +336,8 @@ def main():
     parser.add_argument("--seed", type=int, default=1, help="seed of numpy's default_rng (default 1)")
     parser.add_argument("--engines", type=parse_engines, default=list(ENGINES),
                         help="among %s (default: all that import)" % ",".join(ENGINES))
+    parser.add_argument("--cxx-benchmark", default=CXX_BENCHMARK, metavar="PROGRAM",
+                        help="delaunay_benchmark, for the c++ rows (default: the one in build/)")
     parser.add_argument("--plot", metavar="FIGURE", help="also draw seconds and Mtets/s per engine (.png or .svg)")
     args = parser.parse_args()
     if args.rounds < 1:
@@ -312,7 +347,13 @@ def main():
                  % sys.executable)
 
     engines, notes = [], []
-    for module in dict.fromkeys(MODULE_OF[e] for e in args.engines):
+    if any(e in CXX_ENGINE for e in args.engines):
+        if os.access(args.cxx_benchmark, os.X_OK):
+            engines += [e for e in args.engines if e in CXX_ENGINE]
+        else:
+            notes.append("note: %s is not built: the c++ rows are left out (cmake --build build --target "
+                         "delaunay_benchmark)" % args.cxx_benchmark)
+    for module in dict.fromkeys(MODULE_OF[e] for e in args.engines if MODULE_OF[e]):
         ok, why = importable(module)
         if ok:
             engines += [e for e in args.engines if MODULE_OF[e] == module]
