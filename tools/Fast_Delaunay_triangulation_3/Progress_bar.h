@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The command-line tools' progress line: one line on a terminal, redrawn in
-// place with \r at most ten times a second, shown only once the work has
-// taken a second (short runs print nothing), erased by finish().  Off when
-// the stream is not a terminal (isatty), so logs keep their plain lines.
+// place with \r ten times a second, shown only once the work has taken a
+// second (short runs print nothing), erased by finish().  Off when the
+// stream is not a terminal (isatty), so logs keep their plain lines.
 
 #ifndef CGAL_FDT3_TOOLS_PROGRESS_BAR_H
 #define CGAL_FDT3_TOOLS_PROGRESS_BAR_H
@@ -13,16 +13,26 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <mutex>
 #include <string>
+#include <thread>
 
 namespace fdt3_tools {
 
+// update() only records the state (callers may be the library's worker
+// threads, calling every few thousand points); a thread of its own draws
+// it every 0.1 s, so the elapsed time also moves during a phase that
+// reports nothing (the sort, the write).
 class Progress_bar
 {
 public:
   // `enabled` is also cleared when `stream` is not a terminal.
-  Progress_bar(std::FILE* stream, bool enabled) : stream_(stream), enabled_(enabled && isatty(fileno(stream))) {}
+  Progress_bar(std::FILE* stream, bool enabled) : stream_(stream), enabled_(enabled && isatty(fileno(stream)))
+  {
+    if(enabled_) drawer_ = std::thread([this] { draw_until_finished(); });
+  }
   ~Progress_bar() { finish(); }
   Progress_bar(const Progress_bar&) = delete;
   Progress_bar& operator=(const Progress_bar&) = delete;
@@ -32,60 +42,77 @@ public:
   // "phase [#######.......]  42%  3.1 s": done of total.
   void update(const char* phase, std::size_t done, std::size_t total)
   {
-    if(!due(done >= total)) return;
-    const double fraction = total == 0 ? 1.0 : std::min(1.0, double(done) / double(total));
-    const int width = 40, filled = int(fraction * width + 0.5);
-    char line[160];
-    std::snprintf(line, sizeof(line), "%-7s [%s%s] %3d%%  %.1f s", phase, std::string(filled, '#').c_str(),
-                  std::string(width - filled, '.').c_str(), int(fraction * 100), elapsed());
-    draw(line);
+    if(!enabled_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    phase_ = phase;
+    fraction_ = total == 0 ? 1.0 : std::min(1.0, double(done) / double(total));
+    text_.clear();
   }
   // "phase  text  3.1 s": for work without a known total.
   void update(const char* phase, const std::string& text)
   {
-    if(!due(false)) return;
-    char line[200];
-    std::snprintf(line, sizeof(line), "%-7s %s  %.1f s", phase, text.c_str(), elapsed());
-    draw(line);
+    if(!enabled_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    phase_ = phase;
+    fraction_ = -1;
+    text_ = text;
   }
-  // Erases the line (the next output starts at the left margin).
+  // Stops the drawing and erases the line (the next output starts at the
+  // left margin).
   void finish()
   {
-    if(!shown_) return;
-    std::fprintf(stream_, "\r%*s\r", int(last_length_), "");
-    std::fflush(stream_);
-    shown_ = false;
+    if(!drawer_.joinable()) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      finished_ = true;
+    }
+    wake_.notify_one();
+    drawer_.join();
+    if(last_length_ > 0) {
+      std::fprintf(stream_, "\r%*s\r", int(last_length_), "");
+      std::fflush(stream_);
+    }
   }
 
 private:
   typedef std::chrono::steady_clock Clock;
-  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-  // Whether to redraw now: after the first second, then every 0.1 s (and
-  // at the end of a phase, so that 100% shows).
-  bool due(bool phase_end)
+
+  void draw_until_finished()
   {
-    if(!enabled_) return false;
-    const Clock::time_point now = Clock::now();
-    if(now - start_ < std::chrono::seconds(1)) return false;
-    if(!phase_end && shown_ && now - last_draw_ < std::chrono::milliseconds(100)) return false;
-    last_draw_ = now;
-    return true;
-  }
-  void draw(const char* line)
-  {
-    const std::size_t length = std::string(line).size();
-    std::fprintf(stream_, "\r%s%*s", line, int(last_length_ > length ? last_length_ - length : 0), "");
-    std::fflush(stream_);
-    last_length_ = length;
-    shown_ = true;
+    const Clock::time_point start = Clock::now();
+    std::unique_lock<std::mutex> lock(mutex_);
+    // Nothing for the first second: short runs print no progress at all.
+    if(wake_.wait_until(lock, start + std::chrono::seconds(1), [this] { return finished_; })) return;
+    while(!finished_) {
+      const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      char line[240];
+      if(phase_.empty()) {
+        line[0] = '\0';
+      } else if(fraction_ >= 0) {
+        const int width = 40, filled = int(fraction_ * width + 0.5);
+        std::snprintf(line, sizeof(line), "%-7s [%s%s] %3d%%  %.1f s", phase_.c_str(),
+                      std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(),
+                      int(fraction_ * 100), seconds);
+      } else {
+        std::snprintf(line, sizeof(line), "%-7s %s  %.1f s", phase_.c_str(), text_.c_str(), seconds);
+      }
+      const std::size_t length = std::string(line).size();
+      std::fprintf(stream_, "\r%s%*s", line, int(last_length_ > length ? last_length_ - length : 0), "");
+      std::fflush(stream_);
+      last_length_ = length;
+      wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return finished_; });
+    }
   }
 
   std::FILE* stream_;
   bool enabled_;
-  bool shown_ = false;
-  std::size_t last_length_ = 0;
-  Clock::time_point start_ = Clock::now();
-  Clock::time_point last_draw_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::thread drawer_;
+  bool finished_ = false;
+  std::string phase_, text_;
+  double fraction_ = -1;
+  std::size_t last_length_ = 0; // written by the drawer only, read after it stopped
 };
 
 } // namespace fdt3_tools

@@ -141,9 +141,10 @@ public:
     return std::min(n, end_ - begin_);
   }
 
-  Point_file_error error_at_line(const std::string& problem) const
+  Point_file_error error_at_line(const std::string& problem) const { return error_at_line(line_, problem); }
+  Point_file_error error_at_line(std::size_t line, const std::string& problem) const
   {
-    return Point_file_error(path_ + ": line " + std::to_string(line_) + ": " + problem);
+    return Point_file_error(path_ + ": line " + std::to_string(line) + ": " + problem);
   }
   Point_file_error error_at_offset(std::size_t offset, const std::string& problem) const
   {
@@ -361,6 +362,7 @@ struct Ply_property
   Ply_type type;             // of the value (of each entry for a list)
   Ply_type count_type;       // lists only
   bool is_list = false;
+  std::size_t line = 0;      // in the header
 };
 
 struct Ply_element
@@ -448,6 +450,7 @@ inline std::vector<double> read_ply(const std::string& path, const Read_progress
       if(p.type.bytes == 0) throw in.error_at_line("unknown property type " + quoted(type));
       if(!words.next(name)) throw in.error_at_line("expected 'property TYPE NAME'");
       p.name = std::string(name);
+      p.line = in.line_number();
       elements.back().properties.push_back(p);
     } else {
       throw in.error_at_line("unexpected " + quoted(word) + " in the header");
@@ -462,7 +465,7 @@ inline std::vector<double> read_ply(const std::string& path, const Read_progress
     const int axis = p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1;
     if(axis < 0) continue;
     if(p.is_list || !p.type.is_float)
-      throw in.error_at_line("vertex property " + p.name + " must be float or double (float32 / float64)");
+      throw in.error_at_line(p.line, "vertex property " + p.name + " must be float or double (float32 / float64)");
     coordinate_property[axis] = int(k);
   }
   for(int a = 0; a < 3; ++a)

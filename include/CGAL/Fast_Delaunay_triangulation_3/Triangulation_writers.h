@@ -8,8 +8,9 @@
 //   .msh   Gmsh 4.1 (ASCII), the finite tetrahedra in one volume entity
 //   .off   the convex hull: its triangles oriented outward, its vertices
 //          numbered from 0 in the triangulation's order
-//   .cgal  CGAL's triangulation format (operator<<, ASCII), which CGAL's
-//          and this package's operator>> read back with the infinite cells
+//   .cgal  CGAL's triangulation format (operator<<, ASCII, 17 digits), which
+//          CGAL's and this package's operator>> read back with the
+//          infinite cells
 // The points of .vtu, .mesh and .msh are the vertices in the
 // triangulation's order (sorted for insertion, not the input's); the
 // formats themselves are written by Mesh_file_writers.h.  Below dimension
@@ -163,7 +164,10 @@ void write_triangulation(const std::string& path, const Tr& tr)
   else if(ends_with(path, ".mesh")) write_medit(out, tr);
   else if(ends_with(path, ".msh")) write_msh41(out, tr);
   else if(ends_with(path, ".off")) write_hull_off(out, tr);
-  else out << tr;
+  else {
+    out.precision(17); // the stream's default 6 digits would move the points
+    out << tr;
+  }
   out.flush();
   if(!out) throw std::runtime_error("write_triangulation: error while writing '" + path + "'");
 }
