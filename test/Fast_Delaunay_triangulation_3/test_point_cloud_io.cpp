@@ -220,6 +220,13 @@ TEST(PointCloudPly, BadHeadersAndTruncatedDataAreNamed)
       "w.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
                "end_header\n1 2 3\n4 y 6\n"));
   EXPECT_TRUE(contains(word, "line 9: 'y' is not a number")) << word;
+  // A signed list count of -1 in the element before the vertices.
+  const std::string header = "ply\nformat binary_little_endian 1.0\nelement camera 1\n"
+                             "property list int8 int32 ids\nelement vertex 0\nproperty float x\n"
+                             "property float y\nproperty float z\nend_header\n";
+  const std::string negative = read_error(write_file("n.ply", header + bytes_of(std::int8_t(-1), true)));
+  EXPECT_TRUE(contains(negative, "byte offset " + std::to_string(header.size()) + ": negative list count -1"))
+      << negative;
   std::string bytes = binary_ply(true, false);
   bytes.resize(bytes.size() - 20); // inside the last vertex
   const std::string truncated = read_error(write_file("t.ply", bytes));
@@ -257,13 +264,16 @@ std::string values(const std::vector<double>& v, bool fortran, bool little = tru
 
 TEST(PointCloudNpy, Float64Float32CAndFortranOrder)
 {
-  const std::string c8 = npy("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 3), }", values<double>(three_points, false));
+  const std::string c_order = "{'descr': '<f8', 'fortran_order': False, 'shape': (3, 3), }";
+  const std::string c8 = npy(c_order, values<double>(three_points, false));
   EXPECT_EQ(io::read_npy(write_file("c8.npy", c8)), three_points);
-  const std::string c4 = npy("{'descr': '<f4', 'fortran_order': False, 'shape': (3, 3), }", values<float>(three_points, false));
+  const std::string c4 =
+      npy("{'descr': '<f4', 'fortran_order': False, 'shape': (3, 3), }", values<float>(three_points, false));
   EXPECT_EQ(io::read_points(write_file("c4.npy", c4)), three_points);
-  const std::string f8 = npy("{'descr': '<f8', 'fortran_order': True, 'shape': (3, 3), }", values<double>(three_points, true));
+  const std::string f8 =
+      npy("{'descr': '<f8', 'fortran_order': True, 'shape': (3, 3), }", values<double>(three_points, true));
   EXPECT_EQ(io::read_points(write_file("f8.npy", f8)), three_points);
-  const std::string v2 = npy("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 3), }", values<double>(three_points, false), 2);
+  const std::string v2 = npy(c_order, values<double>(three_points, false), 2);
   EXPECT_EQ(io::read_points(write_file("v2.npy", v2)), three_points);
   const std::string big = npy("{'descr': '>f8', 'fortran_order': False, 'shape': (3, 3), }",
                               values<double>(three_points, false, false));
@@ -373,7 +383,8 @@ Vtu read_vtu(const std::string& path)
     std::memcpy(&end, offsets.first + 4 * c, 4);
     EXPECT_EQ(end, std::int32_t(4 * (c + 1)));
     v.tetra_types += types.first[c] == 10;
-    const std::uint64_t u[4] = {std::uint64_t(ids[0]), std::uint64_t(ids[1]), std::uint64_t(ids[2]), std::uint64_t(ids[3])};
+    std::uint64_t u[4];
+    for(int k = 0; k < 4; ++k) u[k] = std::uint64_t(ids[k]);
     v.cells.push_back(cell_key(v.points, u));
   }
   std::sort(v.cells.begin(), v.cells.end());

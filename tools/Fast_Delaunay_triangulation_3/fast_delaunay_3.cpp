@@ -71,7 +71,10 @@ public:
     ++i_;
     return old;
   }
-  difference_type operator-(const Point_iterator& other) const { return difference_type(i_) - difference_type(other.i_); }
+  difference_type operator-(const Point_iterator& other) const
+  {
+    return difference_type(i_) - difference_type(other.i_);
+  }
   bool operator==(const Point_iterator& other) const { return i_ == other.i_; }
   bool operator!=(const Point_iterator& other) const { return i_ != other.i_; }
 

@@ -23,6 +23,8 @@
 #ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_POINT_CLOUD_IO_H
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_POINT_CLOUD_IO_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Byte_order.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
@@ -51,21 +53,14 @@ typedef std::function<void(std::size_t done, std::size_t total)> Read_progress;
 
 namespace internal {
 
-inline bool host_is_little_endian()
-{
-  const std::uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
-
 // A value of type T stored in `bytes` with the given byte order.
 template <class T>
 T load(const char* bytes, bool little_endian)
 {
   char b[sizeof(T)];
   std::memcpy(b, bytes, sizeof(T));
-  if(little_endian != host_is_little_endian()) std::reverse(b, b + sizeof(T));
+  if(little_endian != Fast_Delaunay_triangulation_3_internal::machine_is_little_endian())
+    std::reverse(b, b + sizeof(T));
   T value;
   std::memcpy(&value, b, sizeof(T));
   return value;
@@ -103,7 +98,7 @@ public:
   {
     for(;;) {
       const char* start = buffer_.data() + begin_;
-      const void* eol = std::memchr(start, '\n', end_ - begin_);
+      const void* eol = end_ > begin_ ? std::memchr(start, '\n', end_ - begin_) : nullptr;
       if(eol != nullptr) {
         const std::size_t length = static_cast<const char*>(eol) - start;
         line = trim_cr(std::string_view(start, length));
@@ -372,14 +367,19 @@ struct Ply_element
   std::vector<Ply_property> properties;
 };
 
-// A PLY integer (a list count) of the given type at `bytes`.
-inline std::size_t ply_count(const char* bytes, const Ply_type& t, bool little)
+// A PLY list count: an integer of type t, read from `in`; throws if negative.
+inline std::size_t ply_list_count(File_reader& in, const Ply_type& t, bool little)
 {
+  const std::size_t at = in.offset();
+  const char* bytes = in.take(std::size_t(t.bytes), "a list count");
+  std::int64_t count;
   switch(t.bytes) {
-  case 1: return t.is_signed ? std::size_t(std::max<int>(0, load<std::int8_t>(bytes, little))) : load<std::uint8_t>(bytes, little);
-  case 2: return t.is_signed ? std::size_t(std::max<int>(0, load<std::int16_t>(bytes, little))) : load<std::uint16_t>(bytes, little);
-  default: return t.is_signed ? std::size_t(std::max<std::int32_t>(0, load<std::int32_t>(bytes, little))) : load<std::uint32_t>(bytes, little);
+  case 1: count = t.is_signed ? load<std::int8_t>(bytes, little) : load<std::uint8_t>(bytes, little); break;
+  case 2: count = t.is_signed ? load<std::int16_t>(bytes, little) : load<std::uint16_t>(bytes, little); break;
+  default: count = t.is_signed ? load<std::int32_t>(bytes, little) : load<std::uint32_t>(bytes, little);
   }
+  if(count < 0) throw in.error_at_offset(at, "negative list count " + std::to_string(count));
+  return std::size_t(count);
 }
 
 inline double ply_coordinate(const char* bytes, const Ply_type& t, bool little)
@@ -395,7 +395,7 @@ inline void skip_binary_item(File_reader& in, const Ply_element& e, bool little)
       in.take(std::size_t(p.type.bytes), ("element " + e.name).c_str());
       continue;
     }
-    const std::size_t count = ply_count(in.take(std::size_t(p.count_type.bytes), "a list count"), p.count_type, little);
+    const std::size_t count = ply_list_count(in, p.count_type, little);
     in.take(count * std::size_t(p.type.bytes), ("a list of element " + e.name).c_str());
   }
 }
@@ -440,7 +440,8 @@ inline std::vector<double> read_ply(const std::string& path, const Read_progress
       if(!words.next(type)) throw in.error_at_line("expected 'property TYPE NAME'");
       if(type == "list") {
         std::string_view count_type;
-        if(!words.next(count_type) || !words.next(type)) throw in.error_at_line("expected 'property list COUNT_TYPE TYPE NAME'");
+        if(!words.next(count_type) || !words.next(type))
+          throw in.error_at_line("expected 'property list COUNT_TYPE TYPE NAME'");
         p.is_list = true;
         p.count_type = ply_type(count_type);
         if(p.count_type.bytes == 0 || p.count_type.is_float)
@@ -457,7 +458,8 @@ inline std::vector<double> read_ply(const std::string& path, const Read_progress
     }
   }
   if(!has_format) throw in.error_at_line("no 'format' line in the header");
-  const auto vertex = std::find_if(elements.begin(), elements.end(), [](const Ply_element& e) { return e.name == "vertex"; });
+  const auto vertex =
+      std::find_if(elements.begin(), elements.end(), [](const Ply_element& e) { return e.name == "vertex"; });
   if(vertex == elements.end()) throw in.error_at_line("no 'element vertex' in the header");
   int coordinate_property[3] = {-1, -1, -1};
   for(std::size_t k = 0; k < vertex->properties.size(); ++k) {
@@ -538,7 +540,7 @@ inline std::vector<double> read_ply(const std::string& path, const Read_progress
     for(std::size_t k = 0; k < vertex->properties.size(); ++k) {
       const Ply_property& p = vertex->properties[k];
       if(p.is_list) {
-        const std::size_t count = ply_count(in.take(std::size_t(p.count_type.bytes), "a list count"), p.count_type, is_little);
+        const std::size_t count = ply_list_count(in, p.count_type, is_little);
         in.take(count * std::size_t(p.type.bytes), "a list of the vertices");
         continue;
       }
@@ -594,7 +596,9 @@ inline std::vector<double> read_npy(const std::string& path, const Read_progress
   const std::string descr = npy_header_value(header, "descr");
   const std::string order = npy_header_value(header, "fortran_order");
   const std::string shape = npy_header_value(header, "shape");
-  if(descr.size() != 3 || (descr[0] != '<' && descr[0] != '>') || descr[1] != 'f' || (descr[2] != '8' && descr[2] != '4'))
+  const bool float_type = descr.size() == 3 && (descr[0] == '<' || descr[0] == '>') && descr[1] == 'f' &&
+                          (descr[2] == '8' || descr[2] == '4');
+  if(!float_type)
     throw in.error_at_offset(header_offset, "unsupported dtype '" + descr + "', expected <f8 or <f4");
   if(order != "False" && order != "True")
     throw in.error_at_offset(header_offset, "no fortran_order True or False in the header");
@@ -627,8 +631,9 @@ inline std::vector<double> read_npy(const std::string& path, const Read_progress
   for(std::size_t j = 0; j < values;) {
     const std::size_t count = std::min(per_block, values - j);
     if(in.available(count * bytes) < count * bytes)
-      throw in.error_at_offset(in.offset(), "the file ends after " + std::to_string((in.offset() - data_offset) / bytes) +
-                                                " of " + std::to_string(values) + " values (truncated binary data)");
+      throw in.error_at_offset(in.offset(), "the file ends after " +
+                                                std::to_string((in.offset() - data_offset) / bytes) + " of " +
+                                                std::to_string(values) + " values (truncated binary data)");
     const char* p = in.take(count * bytes, "the array");
     for(std::size_t k = 0; k < count; ++k, ++j) {
       // Fortran order stores the columns one after the other.

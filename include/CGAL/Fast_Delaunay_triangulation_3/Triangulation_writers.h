@@ -86,25 +86,31 @@ private:
   std::vector<std::uint32_t> number_;
 };
 
+template <class Tr>
+Finite_cells_source finite_cells(const Tr& tr)
+{
+  return Finite_cells_source(tr.flat_storage(), tr.dimension());
+}
+
 } // namespace internal
 
 // Writes the finite tetrahedra as VTK .vtu (raw binary appended arrays).
 template <class Tr>
 void write_vtu(std::ostream& out, const Tr& tr)
 {
-  Fast_Delaunay_triangulation_3_internal::write_vtu(out, internal::Finite_cells_source(tr.flat_storage(), tr.dimension()));
+  Fast_Delaunay_triangulation_3_internal::write_vtu(out, internal::finite_cells(tr));
 }
 
 template <class Tr>
 void write_medit(std::ostream& out, const Tr& tr)
 {
-  Fast_Delaunay_triangulation_3_internal::write_medit(out, internal::Finite_cells_source(tr.flat_storage(), tr.dimension()));
+  Fast_Delaunay_triangulation_3_internal::write_medit(out, internal::finite_cells(tr));
 }
 
 template <class Tr>
 void write_msh41(std::ostream& out, const Tr& tr)
 {
-  Fast_Delaunay_triangulation_3_internal::write_msh41(out, internal::Finite_cells_source(tr.flat_storage(), tr.dimension()));
+  Fast_Delaunay_triangulation_3_internal::write_msh41(out, internal::finite_cells(tr));
 }
 
 // The convex hull as OFF: the finite facet of every infinite cell, which the

@@ -26,6 +26,8 @@
 #ifndef CGAL_FDT3_INTERNAL_MESH_FILE_WRITERS_H
 #define CGAL_FDT3_INTERNAL_MESH_FILE_WRITERS_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Byte_order.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
@@ -94,14 +96,6 @@ private:
   std::ostream& out_;
   std::vector<char> buffer_;
 };
-
-inline bool machine_is_little_endian()
-{
-  const std::uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
 
 template <class Source>
 void write_medit(std::ostream& out, const Source& mesh)
