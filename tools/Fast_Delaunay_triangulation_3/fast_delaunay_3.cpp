@@ -41,7 +41,8 @@ int usage(const char* program)
                "  POINTS  .xyz (x y z per line), .ply (ascii or binary), .off, .npy (float64/float32, shape (n, 3))\n"
                "  OUTPUT  .vtu (VTK, binary), .mesh (Medit), .msh (Gmsh 4.1): the finite tetrahedra;\n"
                "          .off: the convex hull; .cgal: CGAL's triangulation format (operator<<)\n"
-               "  --threads K  Moore partitions (threads) of the parallel insertion (default: all hardware threads)\n"
+               "  --threads K  Moore partitions (threads) of the parallel insertion (default: all hardware threads\n"
+               "               with TBB, else 1)\n"
                "  --quiet      print nothing but errors\n",
                program);
   return 2;
@@ -100,7 +101,11 @@ double peak_memory_gib()
 int main(int argc, char** argv)
 {
   std::string input, output;
+#ifdef CGAL_LINKED_WITH_TBB
   int threads = int(std::thread::hardware_concurrency());
+#else
+  int threads = 1; // without TBB the partitions would run one after the other
+#endif
   bool quiet = false;
   for(int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
