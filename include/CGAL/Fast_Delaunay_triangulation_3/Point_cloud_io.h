@@ -51,7 +51,13 @@ public:
 // Called after each block read with (bytes read so far, file size).
 typedef std::function<void(std::size_t done, std::size_t total)> Read_progress;
 
-namespace internal {
+} // namespace Fast_Delaunay_triangulation_3_io
+
+namespace Fast_Delaunay_triangulation_3_internal {
+namespace point_files {
+
+using Fast_Delaunay_triangulation_3_io::Point_file_error;
+using Fast_Delaunay_triangulation_3_io::Read_progress;
 
 // A value of type T stored in `bytes` with the given byte order.
 template <class T>
@@ -59,7 +65,7 @@ T load(const char* bytes, bool little_endian)
 {
   char b[sizeof(T)];
   std::memcpy(b, bytes, sizeof(T));
-  if(little_endian != Fast_Delaunay_triangulation_3_internal::machine_is_little_endian())
+  if(little_endian != machine_is_little_endian())
     std::reverse(b, b + sizeof(T));
   T value;
   std::memcpy(&value, b, sizeof(T));
@@ -267,17 +273,22 @@ inline std::string lower_extension(const std::string& path)
   return e;
 }
 
-} // namespace internal
+} // namespace point_files
+} // namespace Fast_Delaunay_triangulation_3_internal
+
+namespace Fast_Delaunay_triangulation_3_io {
+
+namespace point_files = Fast_Delaunay_triangulation_3_internal::point_files;
 
 // x y z per line; further columns ignored; blank and # lines skipped.
 inline std::vector<double> read_xyz(const std::string& path, const Read_progress& progress = Read_progress())
 {
-  internal::File_reader in(path, progress);
+  point_files::File_reader in(path, progress);
   std::vector<double> xyz;
   std::string_view line;
   bool reserved = false;
   while(in.next_line(line)) {
-    if(internal::is_comment_or_blank(line)) continue;
+    if(point_files::is_comment_or_blank(line)) continue;
     if(!reserved && in.size() > 0) {
       // About the file size over the first line's length, with a margin:
       // one allocation instead of the doublings of push_back.
@@ -286,7 +297,7 @@ inline std::vector<double> read_xyz(const std::string& path, const Read_progress
     }
     const std::size_t n = xyz.size();
     xyz.resize(n + 3);
-    internal::parse_three_coordinates(in, line, xyz.data() + n, true);
+    point_files::parse_three_coordinates(in, line, xyz.data() + n, true);
   }
   // A copy to give back the margin only when it is large.
   if(xyz.capacity() > xyz.size() + xyz.size() / 2) xyz.shrink_to_fit();
@@ -297,39 +308,43 @@ inline std::vector<double> read_xyz(const std::string& path, const Read_progress
 // then "vertices faces edges"); faces ignored.
 inline std::vector<double> read_off(const std::string& path, const Read_progress& progress = Read_progress())
 {
-  internal::File_reader in(path, progress);
+  point_files::File_reader in(path, progress);
   std::string_view line, word;
   auto next_content_line = [&](const char* what) {
     do {
       if(!in.next_line(line)) throw in.error_at_line(std::string("the file ends before ") + what);
-    } while(internal::is_comment_or_blank(line));
+    } while(point_files::is_comment_or_blank(line));
   };
   next_content_line("the OFF header");
-  internal::Words header(line);
+  point_files::Words header(line);
   header.next(word);
   const bool is_off = word.size() >= 3 && word.substr(word.size() - 3) == "OFF" &&
                       word.find_first_not_of("STCNU4") == word.size() - 3;
-  if(!is_off) throw in.error_at_line("wrong header " + internal::quoted(word) + ", expected OFF (or COFF, NOFF, ...)");
+  if(!is_off)
+    throw in.error_at_line("wrong header " + point_files::quoted(word) + ", expected OFF (or COFF, NOFF, ...)");
   if(word.find('4') != std::string_view::npos) throw in.error_at_line("4OFF (points in 4D) is not supported");
   std::string_view count_word;
   if(!header.next(count_word)) {
     next_content_line("the vertex count");
-    header = internal::Words(line);
+    header = point_files::Words(line);
     header.next(count_word);
   }
   if(count_word == "BINARY") throw in.error_at_line("binary OFF is not supported");
   std::size_t n = 0;
-  if(!internal::parse_integer(count_word, n))
-    throw in.error_at_line("the vertex count " + internal::quoted(count_word) + " is not a number");
+  if(!point_files::parse_integer(count_word, n))
+    throw in.error_at_line("the vertex count " + point_files::quoted(count_word) + " is not a number");
   std::vector<double> xyz(3 * n);
   for(std::size_t i = 0; i < n; ++i) {
     next_content_line(("vertex " + std::to_string(i) + " of " + std::to_string(n)).c_str());
-    internal::parse_three_coordinates(in, line, xyz.data() + 3 * i, false);
+    point_files::parse_three_coordinates(in, line, xyz.data() + 3 * i, false);
   }
   return xyz;
 }
 
-namespace internal {
+} // namespace Fast_Delaunay_triangulation_3_io
+
+namespace Fast_Delaunay_triangulation_3_internal {
+namespace point_files {
 
 // PLY scalar types, by their two names.
 struct Ply_type
@@ -400,12 +415,15 @@ inline void skip_binary_item(File_reader& in, const Ply_element& e, bool little)
   }
 }
 
-} // namespace internal
+} // namespace point_files
+} // namespace Fast_Delaunay_triangulation_3_internal
+
+namespace Fast_Delaunay_triangulation_3_io {
 
 // The vertex element's x, y, z of a PLY file (ascii or binary).
 inline std::vector<double> read_ply(const std::string& path, const Read_progress& progress = Read_progress())
 {
-  using namespace internal;
+  using namespace point_files;
   File_reader in(path, progress);
   std::string_view line, word;
   if(!in.next_line(line) || line != "ply") throw in.error_at_line("wrong header, expected 'ply' on the first line");
@@ -552,7 +570,10 @@ inline std::vector<double> read_ply(const std::string& path, const Read_progress
   return xyz;
 }
 
-namespace internal {
+} // namespace Fast_Delaunay_triangulation_3_io
+
+namespace Fast_Delaunay_triangulation_3_internal {
+namespace point_files {
 
 // The value of 'key' in the NumPy header, a Python dict literal such as
 // {'descr': '<f8', 'fortran_order': False, 'shape': (10, 3), }: the text
@@ -578,12 +599,15 @@ inline std::string npy_header_value(const std::string& header, const std::string
   return value;
 }
 
-} // namespace internal
+} // namespace point_files
+} // namespace Fast_Delaunay_triangulation_3_internal
+
+namespace Fast_Delaunay_triangulation_3_io {
 
 // An (n, 3) array of float64 or float32 in NumPy's .npy format.
 inline std::vector<double> read_npy(const std::string& path, const Read_progress& progress = Read_progress())
 {
-  using namespace internal;
+  using namespace point_files;
   File_reader in(path, progress);
   const char* magic = in.take(8, "the NumPy magic string");
   if(std::memcmp(magic, "\x93NUMPY", 6) != 0) throw in.error_at_offset(0, "wrong header, not a NumPy .npy file");
@@ -647,7 +671,7 @@ inline std::vector<double> read_npy(const std::string& path, const Read_progress
 // By extension (case-insensitive): .xyz, .ply, .off or .npy.
 inline std::vector<double> read_points(const std::string& path, const Read_progress& progress = Read_progress())
 {
-  const std::string e = internal::lower_extension(path);
+  const std::string e = point_files::lower_extension(path);
   if(e == "xyz") return read_xyz(path, progress);
   if(e == "ply") return read_ply(path, progress);
   if(e == "off") return read_off(path, progress);

@@ -34,9 +34,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Fast_Delaunay_triangulation_3_io {
-
-namespace internal {
+namespace Fast_Delaunay_triangulation_3_internal {
 
 // The finite tetrahedra of a triangulation's flat arrays as a source of
 // Mesh_file_writers.h; the live vertices numbered densely (they already are
@@ -44,9 +42,6 @@ namespace internal {
 class Finite_cells_source
 {
 public:
-  typedef Fast_Delaunay_triangulation_3_internal::Flat_storage Flat_storage;
-  typedef Fast_Delaunay_triangulation_3_internal::Vertex_id Vertex_id;
-
   Finite_cells_source(const Flat_storage& mesh, int dimension) : m_(mesh), three_d_(dimension == 3)
   {
     if(m_.dead_vertices == 0) return;
@@ -92,25 +87,27 @@ Finite_cells_source finite_cells(const Tr& tr)
   return Finite_cells_source(tr.flat_storage(), tr.dimension());
 }
 
-} // namespace internal
+} // namespace Fast_Delaunay_triangulation_3_internal
+
+namespace Fast_Delaunay_triangulation_3_io {
 
 // Writes the finite tetrahedra as VTK .vtu (raw binary appended arrays).
 template <class Tr>
 void write_vtu(std::ostream& out, const Tr& tr)
 {
-  Fast_Delaunay_triangulation_3_internal::write_vtu(out, internal::finite_cells(tr));
+  Fast_Delaunay_triangulation_3_internal::write_vtu(out, Fast_Delaunay_triangulation_3_internal::finite_cells(tr));
 }
 
 template <class Tr>
 void write_medit(std::ostream& out, const Tr& tr)
 {
-  Fast_Delaunay_triangulation_3_internal::write_medit(out, internal::finite_cells(tr));
+  Fast_Delaunay_triangulation_3_internal::write_medit(out, Fast_Delaunay_triangulation_3_internal::finite_cells(tr));
 }
 
 template <class Tr>
 void write_msh41(std::ostream& out, const Tr& tr)
 {
-  Fast_Delaunay_triangulation_3_internal::write_msh41(out, internal::finite_cells(tr));
+  Fast_Delaunay_triangulation_3_internal::write_msh41(out, Fast_Delaunay_triangulation_3_internal::finite_cells(tr));
 }
 
 // The convex hull as OFF: the finite facet of every infinite cell, which the
