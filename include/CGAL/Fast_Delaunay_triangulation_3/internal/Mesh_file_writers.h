@@ -40,11 +40,12 @@
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 
-// Text and bytes gathered in a buffer and written to the stream by blocks.
+// Text and bytes gathered in a buffer and written to the stream by blocks;
+// numbers are formatted in place (std::to_chars at the cursor).
 class Output_buffer
 {
 public:
-  explicit Output_buffer(std::ostream& out) : out_(out) { buffer_.reserve(capacity + 64); }
+  explicit Output_buffer(std::ostream& out) : out_(out), buffer_(capacity + room) {}
   ~Output_buffer() { flush(); }
   Output_buffer(const Output_buffer&) = delete;
   Output_buffer& operator=(const Output_buffer&) = delete;
@@ -53,48 +54,59 @@ public:
   Output_buffer& text(const std::string& s) { return bytes(s.data(), s.size()); }
   Output_buffer& character(char c)
   {
-    buffer_.push_back(c);
+    buffer_[size_++] = c;
     return check();
   }
   Output_buffer& number(double x)
   {
-    char s[32];
-    const std::to_chars_result r = std::to_chars(s, s + sizeof(s), x);
-    return bytes(s, std::size_t(r.ptr - s));
+    size_ = std::size_t(std::to_chars(cursor(), cursor() + room, x).ptr - buffer_.data());
+    return check();
   }
   template <class Integer>
   Output_buffer& integer(Integer i)
   {
-    char s[24];
-    const std::to_chars_result r = std::to_chars(s, s + sizeof(s), i);
-    return bytes(s, std::size_t(r.ptr - s));
+    size_ = std::size_t(std::to_chars(cursor(), cursor() + room, i).ptr - buffer_.data());
+    return check();
   }
   // The bytes of a value in the machine's order.
   template <class T>
   Output_buffer& binary(T value)
   {
-    return bytes(reinterpret_cast<const char*>(&value), sizeof(T));
+    static_assert(sizeof(T) <= room, "one value fits in the room after the capacity");
+    std::memcpy(cursor(), &value, sizeof(T));
+    size_ += sizeof(T);
+    return check();
   }
   Output_buffer& bytes(const char* s, std::size_t n)
   {
-    buffer_.insert(buffer_.end(), s, s + n);
+    if(n > room) {
+      flush();
+      out_.write(s, std::streamsize(n));
+      return *this;
+    }
+    std::memcpy(cursor(), s, n);
+    size_ += n;
     return check();
   }
   void flush()
   {
-    if(!buffer_.empty()) out_.write(buffer_.data(), std::streamsize(buffer_.size()));
-    buffer_.clear();
+    if(size_ > 0) out_.write(buffer_.data(), std::streamsize(size_));
+    size_ = 0;
   }
 
 private:
-  static constexpr std::size_t capacity = std::size_t(1) << 20;
+  // Written when the buffer holds `capacity` bytes; one item (a number, a
+  // value, a short text) always fits in the `room` after it.
+  static constexpr std::size_t capacity = std::size_t(1) << 20, room = 64;
+  char* cursor() { return buffer_.data() + size_; }
   Output_buffer& check()
   {
-    if(buffer_.size() >= capacity) flush();
+    if(size_ >= capacity) flush();
     return *this;
   }
   std::ostream& out_;
   std::vector<char> buffer_;
+  std::size_t size_ = 0;
 };
 
 template <class Source>
