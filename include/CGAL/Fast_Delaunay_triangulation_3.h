@@ -46,6 +46,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <iostream>
 #include <iterator>
 #include <memory>
@@ -529,6 +530,16 @@ public:
   // caller's arena; the default with Sequential_tag is 1.
   void set_number_of_threads(int n) { threads_ = std::max(0, std::min(n, 255)); }
   int number_of_threads() const { return threads_; }
+  // Called during every insertion of a range of n > 1 points with (points
+  // settled, n): (0, n) once the points are sorted, then increasing values
+  // every few thousand points (in the partitioned rounds an estimate from
+  // the first partition), last (n, n).  Never per point, never two calls at
+  // once, possibly from a worker thread.  The triangulation does not depend
+  // on it.  An empty function (the default) turns it off.
+  void set_progress(std::function<void(std::size_t done, std::size_t total)> progress)
+  {
+    anchor_->core.progress = std::move(progress);
+  }
 
   // ---------------------------------------------------------------- insertion
   // Inserts the points of [first, last); returns the number of new vertices.

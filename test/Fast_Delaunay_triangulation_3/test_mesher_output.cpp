@@ -2,9 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The mesher's writers, read back by small readers written here from the
-// formats' specifications (Medit .mesh, Gmsh 4.1 .msh, VTK .vtu), not from
-// the writers: same points bit for bit, same tetrahedra, subdomains,
-// triangles and surface numbers.
+// formats' specifications (Medit .mesh, Gmsh 4.1 .msh, VTK .vtu with raw
+// appended arrays), not from the writers: same points bit for bit, same
+// tetrahedra, subdomains, triangles and surface numbers.
 
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
@@ -12,7 +12,10 @@
 
 #include "mesher_shapes.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -176,31 +179,62 @@ TEST(MesherOutput, Gmsh41ReadsBackExactly)
   std::remove(path.c_str());
 }
 
+// VTK XML with the arrays appended raw (header_type UInt64): each array's
+// bytes at the offset its DataArray declares, after the '_' that opens the
+// appended data, behind a 64-bit byte count.
+std::string vtu_array(const std::string& text, const std::string& name)
+{
+  const std::size_t declared = text.find("Name=\"" + name + "\"");
+  if(declared == std::string::npos) return std::string();
+  const std::size_t at = text.find("offset=\"", declared) + 8;
+  const std::size_t offset = std::stoul(text.substr(at, text.find('"', at) - at));
+  const std::size_t start = text.find('_', text.find("<AppendedData")) + 1 + offset;
+  std::uint64_t bytes;
+  std::memcpy(&bytes, text.data() + start, 8);
+  return text.substr(start + 8, bytes);
+}
+
 TEST(MesherOutput, VtuHasTheCellsAndArrays)
 {
   const fm::Tetrahedral_mesh& mesh = nested_spheres_mesh();
   const std::string path = temporary("nested.vtu");
   fm::write_mesh(path, mesh);
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::ostringstream header;
-  header << "NumberOfPoints=\"" << mesh.points.size() << "\" NumberOfCells=\""
-         << mesh.tetrahedra.size() + mesh.triangles.size() << "\"";
+  const std::size_t cells = mesh.tetrahedra.size() + mesh.triangles.size();
+  header << "NumberOfPoints=\"" << mesh.points.size() << "\" NumberOfCells=\"" << cells << "\"";
   EXPECT_NE(text.find(header.str()), std::string::npos);
-  EXPECT_NE(text.find("Name=\"subdomain\""), std::string::npos);
-  EXPECT_NE(text.find("Name=\"surface\""), std::string::npos);
-  // The types array: one "10" per tetrahedron and one "5" per triangle.
-  const std::size_t types = text.find("Name=\"types\"");
-  ASSERT_NE(types, std::string::npos);
-  std::istringstream values(text.substr(text.find('>', types) + 1));
-  std::size_t tetrahedra = 0, triangles = 0;
-  std::string token;
-  while(values >> token && token.front() != '<') {
-    tetrahedra += token == "10";
-    triangles += token == "5";
+  // The types: one 10 per tetrahedron, then one 5 per triangle.
+  const std::string types = vtu_array(text, "types");
+  ASSERT_EQ(types.size(), cells);
+  EXPECT_EQ(std::size_t(std::count(types.begin(), types.begin() + mesh.tetrahedra.size(), char(10))),
+            mesh.tetrahedra.size());
+  EXPECT_EQ(std::size_t(std::count(types.begin() + mesh.tetrahedra.size(), types.end(), char(5))),
+            mesh.triangles.size());
+  // The cell arrays: subdomain of each tetrahedron (0 for triangles),
+  // surface of each triangle (0 for tetrahedra).
+  const std::string subdomain = vtu_array(text, "subdomain"), surface = vtu_array(text, "surface");
+  ASSERT_EQ(subdomain.size(), 4 * cells);
+  ASSERT_EQ(surface.size(), 4 * cells);
+  for(std::size_t c = 0; c < cells; ++c) {
+    std::int32_t d, s;
+    std::memcpy(&d, subdomain.data() + 4 * c, 4);
+    std::memcpy(&s, surface.data() + 4 * c, 4);
+    const bool tetrahedron = c < mesh.tetrahedra.size();
+    ASSERT_EQ(d, tetrahedron ? mesh.subdomain[c] : 0) << "cell " << c;
+    ASSERT_EQ(s, tetrahedron ? 0 : mesh.surface[c - mesh.tetrahedra.size()]) << "cell " << c;
   }
-  EXPECT_EQ(tetrahedra, mesh.tetrahedra.size());
-  EXPECT_EQ(triangles, mesh.triangles.size());
+  // The connectivity: the tetrahedra's then the triangles' vertices.
+  const std::string connectivity = vtu_array(text, "connectivity");
+  ASSERT_EQ(connectivity.size(), 4 * (4 * mesh.tetrahedra.size() + 3 * mesh.triangles.size()));
+  std::vector<std::int32_t> ids(connectivity.size() / 4);
+  std::memcpy(ids.data(), connectivity.data(), connectivity.size());
+  for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+    for(int k = 0; k < 4; ++k) ASSERT_EQ(std::uint32_t(ids[4 * t + k]), mesh.tetrahedra[t][k]);
+  for(std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for(int k = 0; k < 3; ++k)
+      ASSERT_EQ(std::uint32_t(ids[4 * mesh.tetrahedra.size() + 3 * t + k]), mesh.triangles[t][k]);
   std::remove(path.c_str());
 }
 

@@ -6,10 +6,13 @@
 // Meshes the volumes bounded by the closed surfaces of the input files (OFF,
 // STL, OBJ, PLY) with the Delaunay-refinement mesher of the paper's §4 and
 // writes OUTPUT as Medit (.mesh), VTK (.vtu) or Gmsh 4.1 (.msh), by extension.
-// Prints the phases' times, a progress line per refinement pass and the
-// quality report, unless --quiet.
+// Prints the phases' times, a progress line per refinement pass (one line
+// redrawn in place when stdout is a terminal) and the quality report,
+// unless --quiet.
 
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
+
+#include "Progress_bar.h"
 
 #include <cstdlib>
 #include <exception>
@@ -68,7 +71,13 @@ int main(int argc, char** argv)
     std::cerr << "fast_mesh_3: --size must be positive and --threads at least 1\n";
     return 2;
   }
-  if(!quiet)
+  fdt3_tools::Progress_bar bar(stdout, !quiet);
+  if(bar.enabled())
+    options.progress = [&bar](int pass, std::size_t inserted, std::size_t tetrahedra) {
+      bar.update("refine", "pass " + std::to_string(pass + 1) + ": " + std::to_string(inserted) +
+                               " points inserted, " + std::to_string(tetrahedra) + " tetrahedra");
+    };
+  else if(!quiet)
     options.progress = [](int pass, std::size_t inserted, std::size_t tetrahedra) {
       std::cout << "  refinement pass " << pass + 1 << ": " << inserted << " points inserted, " << tetrahedra
                 << " tetrahedra\n" << std::flush;
@@ -78,6 +87,7 @@ int main(int argc, char** argv)
     CGAL::Fast_mesher_3::Mesher_statistics stats;
     const CGAL::Fast_mesher_3::Tetrahedral_mesh mesh = CGAL::Fast_mesher_3::mesh_surface_files(inputs, options, &stats);
     CGAL::Fast_mesher_3::write_mesh(output, mesh);
+    bar.finish();
     if(!quiet) {
       std::cout << "input (read and check)  " << stats.input_seconds << " s\n"
                 << "empty mesh              " << stats.empty_mesh_seconds << " s\n"
@@ -107,6 +117,7 @@ int main(int argc, char** argv)
       std::cout << "wrote " << output << "\n";
     }
   } catch(const std::exception& e) {
+    bar.finish();
     std::cerr << "fast_mesh_3: " << e.what() << "\n";
     return 1;
   }

@@ -238,7 +238,7 @@ Tetrahedral_mesh mesh_surfaces_to_c3t3(const std::vector<std::array<double, 3>>&
                                       });
 }
 
-// Writes .mesh (Medit), .vtu (VTK, ASCII) or .msh (Gmsh 4.1, ASCII), by extension.
+// Writes .mesh (Medit), .vtu (VTK, raw binary appended) or .msh (Gmsh 4.1, ASCII), by extension.
 inline void write_mesh(const std::string& path, const Tetrahedral_mesh& mesh)
 {
   Fast_Delaunay_triangulation_3_internal::mesher::write_mesh_file(path, mesh);

@@ -746,25 +746,41 @@ private:
   std::size_t numbered_count_ = 0;
 };
 
+// Does nothing: insert_in_order without progress reports.
+struct No_progress_report
+{
+  void operator()(std::size_t) const {}
+};
+
 // Algorithm 1's loop: inserts the vertices of `points` (records written) in
 // order with the sequential kernel, starting from `hint`.  For a duplicate v,
-// duplicate_of[v - first_new] receives the vertex it equals.
-inline void insert_in_order(Flat_storage& m, const std::vector<Vertex_id>& points, Vertex_id first_new,
-                            std::vector<Vertex_id>& duplicate_of, Tet_id& hint, const Static_filter& filter,
-                            const Sub_determinant_filter& sub_filter, bool timed, Kernel_statistics& stats)
+// duplicate_of[v - first_new] receives the vertex it equals.  With step > 0,
+// report(i) follows the first i points every `step` points (the loop is cut
+// into chunks, so the per-point path is unchanged and reads no clock).
+template <class Report = No_progress_report>
+void insert_in_order(Flat_storage& m, const std::vector<Vertex_id>& points, Vertex_id first_new,
+                     std::vector<Vertex_id>& duplicate_of, Tet_id& hint, const Static_filter& filter,
+                     const Sub_determinant_filter& sub_filter, bool timed, Kernel_statistics& stats,
+                     std::size_t step = 0, const Report& report = Report())
 {
   Insertion_scratch scratch;
   scratch.timed = timed;
   Delaunay_kernel<> kernel(m, scratch, Mesh_slots{&m}, filter, sub_filter);
   if(!m.is_live(hint)) hint = m.first_live_tet();
-  for(std::size_t i = 0; i < points.size(); ++i) {
-    const Vertex_id v = points[i];
-    const double* next = i + 1 < points.size() ? m.point(points[i + 1]) : nullptr;
-    Vertex_id existing = ghost_vertex;
-    if(kernel.insert(v, hint, existing, next) == Insertion_result::duplicate) {
-      CGAL_assertion(v >= first_new);
-      duplicate_of[v - first_new] = existing;
+  const std::size_t n = points.size();
+  const std::size_t chunk = step == 0 ? n : step;
+  for(std::size_t begin = 0; begin < n; begin += chunk) {
+    const std::size_t end = std::min(n, begin + chunk);
+    for(std::size_t i = begin; i < end; ++i) {
+      const Vertex_id v = points[i];
+      const double* next = i + 1 < n ? m.point(points[i + 1]) : nullptr;
+      Vertex_id existing = ghost_vertex;
+      if(kernel.insert(v, hint, existing, next) == Insertion_result::duplicate) {
+        CGAL_assertion(v >= first_new);
+        duplicate_of[v - first_new] = existing;
+      }
     }
+    if(step != 0) report(end);
   }
   m.live_tets += scratch.live_delta;
   m.ghost_tets += scratch.ghost_delta;

@@ -42,6 +42,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <random>
 #include <vector>
@@ -169,6 +170,7 @@ public:
               Kernel_statistics& stats, Policy& policy)
   {
     int attempt = 0;
+    settled_ = 0;
     while(!points.empty()) {
       while(partitions > 1 && points.size() < min_points_per_partition_ * std::size_t(partitions))
         partitions /= 2;
@@ -196,6 +198,8 @@ public:
         if(5 * row.inserted < row.points) partitions /= 2;
       }
       vertices_in_mesh_ += row.inserted;
+      settled_ += row.inserted;
+      if(progress_) progress_(settled_);
       row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       rounds.push_back(row);
     }
@@ -216,23 +220,38 @@ public:
   typedef std::pair<Vertex_id, Vertex_id> Vertex_range;
   void set_sorted_runs(std::vector<Vertex_range> runs) { sorted_runs_ = std::move(runs); }
   void set_min_points_per_partition(std::size_t n) { min_points_per_partition_ = std::max<std::size_t>(n, 1); }
+  // Called with the points of insert()'s call settled so far: after every
+  // attempt, and every progress_step points of the sequential finish and of
+  // partition 0 during an attempt (there an estimate: partition 0's share
+  // done times the attempt's points; never two calls at once, but possibly
+  // from a worker thread).
+  static constexpr std::size_t progress_step = std::size_t(1) << 16;
+  void set_progress(std::function<void(std::size_t)> progress) { progress_ = std::move(progress); }
 
 private:
   // Algorithm 1's loop over points[begin, end) with one kernel; the points
   // the kernel could not take go to `failures`.  Each insertion also sees
   // the next point, which the Delaunay kernel's hint aims at.
+  // With `report`, it follows the points done every progress_step points
+  // (the loop is cut into chunks: nothing more per point).
   template <class Policy, class Kernel>
   void insert_run(Policy& policy, Kernel& kernel, int partition, const Vertex_id* begin, const Vertex_id* end,
                   Vertex_id first_new, std::vector<Vertex_id>& duplicate_of, Tet_id& hint,
-                  std::vector<Vertex_id>& failures) const
+                  std::vector<Vertex_id>& failures, const std::function<void(std::size_t)>* report = nullptr) const
   {
-    for(const Vertex_id* v = begin; v != end; ++v) {
-      const double* next = v + 1 != end ? m_.point(v[1]) : nullptr;
-      Vertex_id existing = ghost_vertex;
-      const Insertion_result r =
-          hint == no_tet ? Insertion_result::aborted : policy.insert(kernel, partition, *v, hint, existing, next);
-      if(r == Insertion_result::duplicate) duplicate_of[*v - first_new] = existing;
-      else if(r == Insertion_result::aborted) failures.push_back(*v);
+    const std::size_t chunk = report ? progress_step : std::size_t(end - begin);
+    for(const Vertex_id* chunk_begin = begin; chunk_begin != end;) {
+      const Vertex_id* chunk_end = chunk_begin + std::min<std::size_t>(chunk, std::size_t(end - chunk_begin));
+      for(const Vertex_id* v = chunk_begin; v != chunk_end; ++v) {
+        const double* next = v + 1 != end ? m_.point(v[1]) : nullptr;
+        Vertex_id existing = ghost_vertex;
+        const Insertion_result r =
+            hint == no_tet ? Insertion_result::aborted : policy.insert(kernel, partition, *v, hint, existing, next);
+        if(r == Insertion_result::duplicate) duplicate_of[*v - first_new] = existing;
+        else if(r == Insertion_result::aborted) failures.push_back(*v);
+      }
+      chunk_begin = chunk_end;
+      if(report) (*report)(std::size_t(chunk_end - begin));
     }
   }
 
@@ -248,8 +267,10 @@ private:
                                                                               filter_, sub_filter_);
     if(!m_.is_live(hint)) hint = m_.first_live_tet();
     std::vector<Vertex_id> failures;
+    const std::size_t before = settled_;
+    const std::function<void(std::size_t)> report = [&](std::size_t done) { progress_(before + done); };
     insert_run(policy, kernel, 0, points.data(), points.data() + points.size(), first_new, duplicate_of, hint,
-               failures);
+               failures, progress_ ? &report : nullptr);
     CGAL_assertion(failures.empty()); // only a partition aborts
     m_.live_tets += scratch.live_delta;
     m_.ghost_tets += scratch.ghost_delta;
@@ -538,6 +559,10 @@ private:
     std::vector<Insertion_scratch> scratches(partitions);
     std::vector<std::vector<Vertex_id>> failures(partitions);
     std::vector<Tet_id> next_fresh(partitions);
+    const std::size_t before = settled_, share = cut[1] - cut[0];
+    const std::function<void(std::size_t)> report = [&](std::size_t done) {
+      progress_(before + (share == 0 ? 0 : done * points.size() / share));
+    };
 
     for_each_chunk(partitions, [&](int j) {
       Insertion_scratch& scratch = scratches[j];
@@ -550,7 +575,7 @@ private:
           sub_filter_, ownership);
       Tet_id hint = hints[j];
       insert_run(policy, kernel, j, sorted.data() + cut[j], sorted.data() + cut[j + 1], first_new, duplicate_of,
-                 hint, failures[j]);
+                 hint, failures[j], j == 0 && progress_ ? &report : nullptr);
       next_fresh[j] = kernel.slots().next_fresh;
     });
 
@@ -619,6 +644,8 @@ private:
   std::size_t min_points_per_partition_ = default_min_points_per_partition;
   std::vector<std::uint8_t> partition_of_vertex_;
   std::vector<Vertex_range> sorted_runs_;
+  std::function<void(std::size_t)> progress_;
+  std::size_t settled_ = 0; // points of the current insert() settled
 };
 
 } // namespace Fast_Delaunay_triangulation_3_internal

@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -60,6 +61,12 @@ public:
   bool timed = false; // per-phase times (four clock reads per point)
   // Moore partitions inserted concurrently (1: sequential kernel only).
   int partitions = 1;
+  // Called during a bulk insertion of n > 1 points with (points settled, n):
+  // (0, n) once sorted, then increasing values every few thousand points
+  // (per chunk of the sequential loop, per attempt and per chunk of
+  // partition 0 of the partitioned rounds, an estimate there), last (n, n).
+  // Never per point; never two calls at once, possibly from a worker thread.
+  std::function<void(std::size_t, std::size_t)> progress;
 
   bool sub_determinants() const { return mesh.with_sub_determinants; }
   // Caches the in-sphere sub-determinants of every tetrahedron (or drops them).
@@ -170,6 +177,9 @@ public:
     }
     const Clock::time_point t1 = Clock::now();
     last_report.sort_seconds = seconds(t0, t1);
+    progress_total_ = n;
+    progress_done_ = 0;
+    if(progress && n > 1) progress(0, n);
 
     // duplicate_of[i]: the vertex that new vertex first_new + i duplicates, or
     // ghost_vertex if it is a genuine new vertex.
@@ -193,6 +203,7 @@ public:
         (*vertex_of_input)[order.order[i]] = duplicate_of[i];
     }
     last_report.finish_seconds = seconds(t2, Clock::now());
+    report_progress(n);
     return added;
   }
 
@@ -478,14 +489,29 @@ private:
   static std::size_t expected_tets(std::size_t n) { return n * 27 / 4 + n / 16 + 64; }
 
   // Inserts vertices [begin, end) in order, skipping those in `skip`.
+  // new_points: [begin, end) are the new points of insert(), whose progress
+  // is reported.
   void insert_range(Vertex_id begin, Vertex_id end, Vertex_id first_new,
-                    std::vector<Vertex_id>& duplicate_of, const Vertex_id* skip = nullptr)
+                    std::vector<Vertex_id>& duplicate_of, const Vertex_id* skip = nullptr, bool new_points = false)
   {
     const Clock::time_point t0 = Clock::now();
+    const bool report = new_points && progress;
     insert_in_order(mesh, vertex_list(begin, end, skip), first_new, duplicate_of, hint_,
                     Static_filter::for_box(box_lo_, box_hi_), Sub_determinant_filter::for_box(box_lo_, box_hi_),
-                    timed, last_report.kernel);
+                    timed, last_report.kernel,
+                    report ? std::max<std::size_t>(progress_total_ / 256, 4096) : 0,
+                    [&](std::size_t done) { report_progress(done); });
     last_report.insertion_seconds += seconds(t0, Clock::now());
+  }
+
+  // Forwards `done` (at most the total) to `progress` if it is more than
+  // the last value reported.
+  void report_progress(std::size_t done)
+  {
+    done = std::min(done, progress_total_);
+    if(!progress || progress_total_ < 2 || done <= progress_done_) return;
+    progress_done_ = done;
+    progress(done, progress_total_);
   }
 
   // Dead records are in no list: they are in no tetrahedron.
@@ -572,7 +598,7 @@ private:
   {
     const Vertex_id end = static_cast<Vertex_id>(vertex_slots());
     if(partitions <= 1) {
-      insert_range(first_new, end, first_new, duplicate_of, skip);
+      insert_range(first_new, end, first_new, duplicate_of, skip, true);
       return;
     }
     const Clock::time_point t0 = Clock::now();
@@ -592,12 +618,14 @@ private:
     if(skip != nullptr)
       for(int k = 0; k < 4; ++k) simplex_end = std::max<std::size_t>(simplex_end, std::size_t(skip[k]) + 1);
     std::size_t begin = 0;
+    if(progress) engine.set_progress([&](std::size_t settled) { report_progress(begin + settled); });
     for(std::size_t r = 0; r < round_end.size(); ++r) {
       engine.set_vertex_end(std::max<std::size_t>(first_new + begin, simplex_end));
       engine.insert(vertex_list(first_new + begin, first_new + round_end[r], skip), r == 0 ? 1 : partitions,
                     first_new, duplicate_of, hint_,
                     last_report.rounds, last_report.kernel);
       begin = round_end[r];
+      report_progress(begin);
     }
     last_report.insertion_seconds += seconds(t0, Clock::now());
   }
@@ -775,6 +803,7 @@ private:
   Insertion_scratch single_scratch_;
   std::vector<Tet_id> single_ball_;
   double box_lo_[3], box_hi_[3];
+  std::size_t progress_total_ = 0, progress_done_ = 0;
 };
 
 inline bool Triangulation_core::is_valid(std::string* why) const
