@@ -110,10 +110,12 @@ private:
 
   void cell_coordinates(const double* p, int k[3]) const
   {
-    // Points beyond the box (and on its far side) land in the border cells.
+    // Points beyond the box (and on its far side) land in the border cells;
+    // so does a NaN, from a box whose extent overflows (coordinates near
+    // the largest double): it then has one cell along that axis, in effect.
     for(int a = 0; a < 3; ++a) {
       const double x = (p[a] - lo_[a]) * scale_[a];
-      k[a] = x < 0 ? 0 : x >= resolution_ ? resolution_ - 1 : static_cast<int>(x);
+      k[a] = x >= 0 ? (x < resolution_ ? static_cast<int>(x) : resolution_ - 1) : 0;
     }
   }
   std::size_t index(const int k[3]) const
