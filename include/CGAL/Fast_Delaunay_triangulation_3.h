@@ -1683,6 +1683,10 @@ public:
   // ---------------------------------------------------------------- internals
   const Anchor* storage_anchor() const { return anchor_.get(); }
   const Flat_storage& flat_storage() const { return anchor_->core.mesh; }
+  // For an export that ends the triangulation (the Python module's
+  // delaunay() turns the tetrahedron records into its output in place):
+  // the arrays to take apart.  Only clear() and the destructor may follow.
+  Flat_storage& flat_storage_to_take_apart() { return anchor_->core.mesh; }
   Point point_of(Vertex_id v) const { return anchor_->point_of(v); }
   Cell_handle incident_cell_of(Vertex_id v) const { return anchor_->incident_cell_of(v); }
   bool has_infinite_vertex(Tet_id t) const { return anchor_->has_infinite_vertex(t); }

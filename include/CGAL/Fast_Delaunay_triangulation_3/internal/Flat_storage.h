@@ -154,6 +154,17 @@ public:
     data_[size_ - 1] = value;
   }
   void clear() { size_ = 0; }
+  // Hands the block over to the caller, who frees it with std::free();
+  // data() was at `data` in it.  The array is left empty.
+  char* release(T*& data) noexcept
+  {
+    char* block = block_;
+    data = data_;
+    block_ = nullptr;
+    data_ = nullptr;
+    size_ = capacity_ = 0;
+    return block;
+  }
   // Maps the whole pages of elements [begin, end) (within the capacity) in
   // one system call, before they are first written (Linux 5.14+; elsewhere,
   // or if the call fails, the first writes fault the pages in as usual).
