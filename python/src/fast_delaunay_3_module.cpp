@@ -675,7 +675,10 @@ tetrahedra, positively oriented, the same cells as CGAL's
 Delaunay_triangulation_3; neighbors (m, 4): the tetrahedron across the facet
 opposite vertex i, -1 on the convex hull.  Equal points are one vertex, named
 by the first of them.  Indices are int32 (uint32 from 2^31 points on).
-Fewer than 4 affinely independent points: no tetrahedra.
+Fewer than 4 affinely independent points: no tetrahedra.  tets and neighbors
+are the two halves of one (m, 8) array (views whose rows are 32 bytes apart:
+the triangulation's own memory, handed over without a copy);
+numpy.ascontiguousarray gives contiguous copies where a library needs them.
 threads: Moore partitions inserted in parallel (None: all hardware threads).
 A NaN or infinite coordinate raises ValueError naming the row.)");
 
