@@ -366,13 +366,18 @@ inline void check_self_intersections(const Surface_soup& soup)
 // the rounding of that sum.)  The differences are scaled by a power of two
 // that brings the coordinates below 1, so that cubes of 1e200 or 1e-200 do
 // not overflow or vanish.
-inline void check_outward_orientation(const Surface_soup& soup)
+inline double largest_coordinate(const Surface_soup& soup)
 {
   double largest = 0;
   for(const auto& p : soup.points)
     for(double x : p) largest = std::max(largest, std::abs(x));
+  return largest;
+}
+
+inline void check_outward_orientation(const Surface_soup& soup)
+{
   int exponent = 0;
-  std::frexp(largest, &exponent);
+  std::frexp(largest_coordinate(soup), &exponent);
   std::vector<double> volume(soup.number_of_surfaces + 1, 0);
   std::vector<const std::array<double, 3>*> apex(soup.number_of_surfaces + 1, nullptr);
   std::vector<std::size_t> first(soup.number_of_surfaces + 1, 0);

@@ -36,9 +36,7 @@ public:
   // of magnitude than a double holds, e.g. 1e300 beside 1e-300).
   explicit Unit_scaling(const Surface_soup& soup)
   {
-    double largest = 0;
-    for(const auto& p : soup.points)
-      for(double x : p) largest = std::max(largest, std::abs(x));
+    const double largest = largest_coordinate(soup);
     if(largest == 0) return; // no extent at all: refused later as degenerate
     int e;
     std::frexp(largest, &e); // largest = m * 2^e, m in [0.5, 1)
