@@ -5,12 +5,13 @@
 # OpenCASCADE) for that benchmark; and for Debian's /usr/bin/python3: pybind11 and numpy for the Python module,
 # pytest and scipy (the oracle of its tests), meshio to read the mesher's files back in a test, matplotlib for the
 # benchmarks' figures (--plot), and Gmsh's Python API, whose tetrahedralize the Python benchmark times beside ours
-# and scipy's. Does nothing if all are present.
+# and scipy's; Open MPI for the distributed triangulation (its test runs under mpirun). Does nothing if all are
+# present.
 set -euo pipefail
 
 packages=(build-essential cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev libgtest-dev libtet1.5-dev
           libcgal-demo libgmsh-dev python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-scipy
-          python3-meshio python3-matplotlib python3-gmsh)
+          python3-meshio python3-matplotlib python3-gmsh libopenmpi-dev openmpi-bin)
 
 missing=()
 for package in "${packages[@]}"; do
