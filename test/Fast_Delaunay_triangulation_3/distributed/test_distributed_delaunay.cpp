@@ -220,7 +220,9 @@ TEST(DistributedDelaunay, GhostLayerCellsAreCgalCellsOfOtherRanks)
     for(const Global_cell& c : all_layers) all_cgal = all_cgal && std::binary_search(expected.begin(), expected.end(), c);
   }
   EXPECT_TRUE(agreed(all_cgal));
-  if(ranks_of_world() == 1) EXPECT_EQ(layer_size, 0u);
+  if(ranks_of_world() == 1) {
+    EXPECT_EQ(layer_size, 0u);
+  }
 }
 
 // All the points handed to rank 0; the partition spreads them.
@@ -230,7 +232,9 @@ TEST(DistributedDelaunay, AllPointsHandedToOneRank)
   const Share s = rank_of_world() == 0 ? share_of(all, 0, all.size()) : Share();
   const Distributed dt(MPI_COMM_WORLD, s.xyz, s.ids);
   expect_cgal_cells(dt, all);
-  if(ranks_of_world() > 1) EXPECT_GT(dt.statistics().own_points, 0u);
+  if(ranks_of_world() > 1) {
+    EXPECT_GT(dt.statistics().own_points, 0u);
+  }
 }
 
 // A rank handed nothing, and more ranks than points: ranks that own no point take part in every round.
@@ -343,7 +347,9 @@ TEST(DistributedDelaunay, StatisticsAddUp)
   EXPECT_EQ(comm.sum(st.owned_cells), comm.sum(dt.owned_cells().size()));
   EXPECT_EQ(comm.max(std::uint64_t(st.exchange_rounds)), comm.min(std::uint64_t(st.exchange_rounds)));
   EXPECT_EQ(dt.local_triangulation().number_of_vertices(), st.own_points + st.ghost_points);
-  if(ranks_of_world() == 1) EXPECT_EQ(st.ghost_points, 0u);
+  if(ranks_of_world() == 1) {
+    EXPECT_EQ(st.ghost_points, 0u);
+  }
 }
 
 } // namespace test_distributed_delaunay

@@ -22,6 +22,8 @@
 //   std::size_t number_of_triangles() const;
 //   template <class F> void for_each_triangle(F f) const;     f(const std::uint32_t* v, int surface)
 //   int number_of_subdomains() const;   int number_of_surfaces() const;
+// The pieces of a distributed mesh pass the points' global numbers (node_ids): a point array "global_id" in the
+// .vtu; node tags = global number + 1 in the .msh, whose element tags then start at first_element_tag.
 
 #ifndef CGAL_FDT3_INTERNAL_MESH_FILE_WRITERS_H
 #define CGAL_FDT3_INTERNAL_MESH_FILE_WRITERS_H
@@ -136,7 +138,7 @@ void write_medit(std::ostream& out, const Source& mesh)
 // VTK unstructured grid, tetrahedra (type 10) then triangles (type 5), the
 // arrays appended raw, each after its byte count (header_type UInt64).
 template <class Source>
-void write_vtu(std::ostream& out, const Source& mesh)
+void write_vtu(std::ostream& out, const Source& mesh, const std::uint64_t* node_ids = nullptr)
 {
   const std::uint64_t points = mesh.number_of_points(), tets = mesh.number_of_tetrahedra(),
                       triangles = mesh.number_of_triangles(), cells = tets + triangles;
@@ -152,6 +154,8 @@ void write_vtu(std::ostream& out, const Source& mesh)
     arrays.push_back({"Int32", "subdomain", 1, 4 * cells});
     arrays.push_back({"Int32", "surface", 1, 4 * cells});
   }
+  const std::size_t ids_array = arrays.size();
+  if(node_ids) arrays.push_back({"UInt64", "global_id", 1, 8 * points});
   Output_buffer o(out);
   std::uint64_t offset = 0;
   auto declare = [&](const Array& a) {
@@ -174,6 +178,11 @@ void write_vtu(std::ostream& out, const Source& mesh)
     declare(arrays[4]);
     declare(arrays[5]);
     o.text("</CellData>\n");
+  }
+  if(node_ids) {
+    o.text("<PointData>\n");
+    declare(arrays[ids_array]);
+    o.text("</PointData>\n");
   }
   o.text("</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_");
 
@@ -203,6 +212,10 @@ void write_vtu(std::ostream& out, const Source& mesh)
     for(std::uint64_t t = 0; t < tets; ++t) o.binary(std::int32_t(0));
     mesh.for_each_triangle([&](const std::uint32_t*, int surface) { o.binary(std::int32_t(surface)); });
   }
+  if(node_ids) {
+    o.binary(arrays[ids_array].bytes);
+    for(std::size_t i = 0; i < points; ++i) o.binary(node_ids[i]);
+  }
   o.text("\n</AppendedData>\n</VTKFile>\n");
 }
 
@@ -210,7 +223,8 @@ void write_vtu(std::ostream& out, const Source& mesh)
 // bounding lists (discrete entities); all nodes in one block on volume 1;
 // one element block per entity.  Node and element tags start at 1.
 template <class Source>
-void write_msh41(std::ostream& out, const Source& mesh)
+void write_msh41(std::ostream& out, const Source& mesh, const std::uint64_t* node_ids = nullptr,
+                 std::uint64_t first_element_tag = 1)
 {
   double lo[3], hi[3];
   for(int a = 0; a < 3; ++a) {
@@ -248,8 +262,15 @@ void write_msh41(std::ostream& out, const Source& mesh)
   o.text("$EndEntities\n");
 
   const std::size_t n = mesh.number_of_points();
-  o.text("$Nodes\n1 ").integer(n).text(" 1 ").integer(n).text("\n3 1 0 ").integer(n).character('\n');
-  for(std::size_t i = 1; i <= n; ++i) o.integer(i).character('\n');
+  auto node_tag = [&](std::uint32_t i) { return (node_ids ? node_ids[i] : std::uint64_t(i)) + 1; };
+  std::uint64_t lowest_tag = n > 0 ? node_tag(0) : 1, highest_tag = n > 0 ? lowest_tag : 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    lowest_tag = std::min(lowest_tag, node_tag(std::uint32_t(i)));
+    highest_tag = std::max(highest_tag, node_tag(std::uint32_t(i)));
+  }
+  o.text("$Nodes\n1 ").integer(n).character(' ').integer(lowest_tag).character(' ').integer(highest_tag)
+      .text("\n3 1 0 ").integer(n).character('\n');
+  for(std::size_t i = 0; i < n; ++i) o.integer(node_tag(std::uint32_t(i))).character('\n');
   for(std::size_t i = 0; i < n; ++i) {
     const double* p = mesh.point(i);
     o.number(p[0]).character(' ').number(p[1]).character(' ').number(p[2]).character('\n');
@@ -257,15 +278,16 @@ void write_msh41(std::ostream& out, const Source& mesh)
   o.text("$EndNodes\n");
 
   const std::size_t elements = mesh.number_of_tetrahedra() + mesh.number_of_triangles();
-  o.text("$Elements\n").integer(surfaces + volumes).character(' ').integer(elements).text(" 1 ")
-      .integer(elements).character('\n');
-  std::size_t tag = 0;
+  o.text("$Elements\n").integer(surfaces + volumes).character(' ').integer(elements).character(' ')
+      .integer(first_element_tag).character(' ').integer(first_element_tag + elements - 1)
+      .character('\n');
+  std::uint64_t tag = first_element_tag - 1;
   for(int s = 1; s <= surfaces; ++s) {
     o.text("2 ").integer(s).text(" 2 ").integer(triangles_on[s]).character('\n');
     mesh.for_each_triangle([&](const std::uint32_t* v, int surface) {
       if(surface != s) return;
       o.integer(++tag);
-      for(int k = 0; k < 3; ++k) o.character(' ').integer(v[k] + std::uint64_t(1));
+      for(int k = 0; k < 3; ++k) o.character(' ').integer(node_tag(v[k]));
       o.character('\n');
     });
   }
@@ -274,7 +296,7 @@ void write_msh41(std::ostream& out, const Source& mesh)
     mesh.for_each_tetrahedron([&](const std::uint32_t* v, int subdomain) {
       if(subdomain != d) return;
       o.integer(++tag);
-      for(int k = 0; k < 4; ++k) o.character(' ').integer(v[k] + std::uint64_t(1));
+      for(int k = 0; k < 4; ++k) o.character(' ').integer(node_tag(v[k]));
       o.character('\n');
     });
   }
