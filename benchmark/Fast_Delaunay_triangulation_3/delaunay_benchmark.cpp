@@ -16,7 +16,7 @@
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,shell,torus,surface...]|all] [--surface FILE]
 //                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-move,cgal-move,
 //                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint]
-//                           [--rounds 3] [--threads 1,2] [--phases] [--verbose] [--csv FILE|-]
+//                           [--rounds 3] [--threads 1,2] [--phases] [--verbose] [--scalar-paths] [--csv FILE|-]
 //
 // Besides the volume distributions of the tests, shell, torus and surface are what scans give: points near a closed
 // surface (the unit sphere, the torus R = 1, r = 0.3, both with noise 1e-3 along the normal), and points sampled by
@@ -529,6 +529,7 @@ struct Options
   int rounds = 3;
   bool phases = false;
   bool verbose = false;
+  bool scalar_paths = false;          // our engines with the scalar forms of the predicates forced
   std::string csv_path;               // empty: no CSV; "-": CSV on standard output instead of the table
 };
 
@@ -593,6 +594,8 @@ void print_usage(std::FILE* to)
                "  --phases        also print our per-phase breakdown (sort, init, walk, cavity, ball, other)\n"
                "  --verbose       also print the attempts of our parallel engine (paper Table 2), one more run per\n"
                "                  --threads value with exactly that many partitions\n"
+               "  --scalar-paths  our engines with the scalar forms of the predicates, as on a processor without\n"
+               "                  AVX2 and FMA (by default they take the AVX2 forms where the processor has them)\n"
                "  --csv FILE      also write the table as comma-separated values to FILE, the machine in lines\n"
                "                  that start with '#' (scripts/plot_benchmark.py draws it); '-': on standard\n"
                "                  output, instead of the table\n",
@@ -640,6 +643,8 @@ Options parse_options(int argc, char** argv)
       options.phases = true;
     } else if(option == "--verbose") {
       options.verbose = true;
+    } else if(option == "--scalar-paths") {
+      options.scalar_paths = true;
     } else if(option == "--csv") {
       options.csv_path = value();
     } else if(option == "--help" || option == "-h") {
@@ -717,6 +722,8 @@ void print_machine(std::FILE* out, const char* prefix)
 #else
   std::fprintf(out, "no TBB");
 #endif
+  std::fprintf(out, ", predicates: %s",
+               CGAL::Fast_Delaunay_triangulation_3_internal::use_avx2_paths() ? "AVX2 and FMA forms" : "scalar forms");
 #ifdef NDEBUG
   std::fprintf(out, ", NDEBUG\n");
 #else
@@ -1072,6 +1079,9 @@ int main(int argc, char** argv)
     print_usage(stderr);
     return 2;
   }
+
+  // Set before the engines' processes are forked: they inherit it.
+  CGAL::Fast_Delaunay_triangulation_3_internal::scalar_paths_forced() = options.scalar_paths;
 
   const bool table = options.csv_path != "-";
   std::FILE* csv = nullptr;
