@@ -4,7 +4,8 @@
 #      (GoogleTest programs and the pytest suite python/tests);
 #   2. ASan + UBSan build of the tests in build-asan/, all tests;
 #   3. ThreadSanitizer build of the parallel tests (program test_parallel) in build-tsan/;
-#   4. the kernel's tests built without -march=native (the scalar paths of a plain Release build) in build-portable/;
+#   4. the kernel's tests built without -march=native (a plain Release build: AVX2 paths chosen at run time, the
+#      scalar ones forced by the tests) in build-portable/;
 #   5. the kernel's tests built without TBB in build-no-tbb/.
 # Every stage runs even if an earlier one failed and prints its seconds; the exit status is non-zero if any failed.
 set -euo pipefail
@@ -53,7 +54,8 @@ tsan_build() {
 # the partitioned engine): the code paths that a build option selects.
 kernel_tests="test_predicates;test_agreement_with_cgal;test_degenerate_inputs;test_parallel_insertion"
 
-# Without -march=native: the scalar predicates and sorts that a user's plain Release build compiles.
+# Without -march=native, as a user's plain Release build: the predicates' AVX2 forms as functions for that target,
+# chosen at run time where the processor has them, and the scalar forms (which the tests also force) and sorts.
 portable_build() {
   cmake -S . -B build-portable -DCMAKE_BUILD_TYPE=Release -DFDT3_NATIVE=OFF -DFDT3_TEST_FILES="$kernel_tests" \
         -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF -DFDT3_BUILD_TOOLS=OFF -DFDT3_BUILD_PYTHON=OFF &&

@@ -13,10 +13,15 @@
 // constructions kernel; rows fast-loop / cgal-loop and fast-hint / cgal-hint (not run by default) time insert(p)
 // called once per point, without and with the previous vertex as hint; each is compared with its CGAL counterpart.
 //
-// Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,grid...]|all]
+// Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,shell,torus,surface...]|all] [--surface FILE]
 //                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-move,cgal-move,
 //                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint]
-//                           [--rounds 3] [--threads 2[,1...]] [--phases] [--verbose] [--csv FILE|-]
+//                           [--rounds 3] [--threads 1,2] [--phases] [--verbose] [--scalar-paths] [--csv FILE|-]
+//
+// Besides the volume distributions of the tests, shell, torus and surface are what scans give: points near a closed
+// surface (the unit sphere, the torus R = 1, r = 0.3, both with noise 1e-3 along the normal), and points sampled by
+// area on a scanned model of CGAL's data (bunny00.off, or --surface FILE) with noise 1e-3 of its bounding box's
+// diagonal. Their tetrahedra are long and thin, which is where a parallel insertion by space partitions suffers.
 //
 // --csv FILE writes one row per engine, thread count, n and distribution (the medians) beside the table, with the
 // machine in '#' lines above them: scripts/plot_benchmark.py draws it (scripts/benchmark.sh --plot does both).
@@ -26,6 +31,7 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OFF.h>
 #include <CGAL/version.h>
 #ifdef CGAL_LINKED_WITH_TBB
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
@@ -47,6 +53,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -365,6 +372,65 @@ const std::vector<Engine>& engine_table()
 }
 
 
+// ------------------------------------------------------------------------------------------------ surface input
+
+#ifndef FDT3_CGAL_DATA_DIR
+#define FDT3_CGAL_DATA_DIR "."
+#endif
+
+bool readable(const std::string& path) { return static_cast<bool>(std::ifstream(path)); }
+
+// n points sampled uniformly by area on the triangles of the OFF surface at `path` (polygons split into fans), each
+// moved along its triangle's unit normal by a Gaussian of deviation 1e-3 times the diagonal of the surface's
+// bounding box: a noisy scan of the model. Deterministic for a given seed.
+std::vector<fdt3_test::Xyz> surface_points(const std::string& path, std::size_t n, std::uint64_t seed = 12)
+{
+  std::vector<Point> vertices;
+  std::vector<std::vector<std::size_t>> polygons;
+  if(!CGAL::IO::read_OFF(path, vertices, polygons) || vertices.empty())
+    throw std::runtime_error("cannot read the surface " + path);
+  struct Triangle
+  {
+    Kernel::Vector_3 origin, u, v, normal; // origin + s u + t v, s, t >= 0, s + t <= 1
+  };
+  std::vector<Triangle> triangles;
+  std::vector<double> cumulative_area; // area of triangles[0..i]
+  double total = 0;
+  for(const auto& polygon : polygons)
+    for(std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+      const Kernel::Vector_3 a = vertices.at(polygon[0]) - CGAL::ORIGIN;
+      const Kernel::Vector_3 u = vertices.at(polygon[k]) - vertices[polygon[0]];
+      const Kernel::Vector_3 v = vertices.at(polygon[k + 1]) - vertices[polygon[0]];
+      const Kernel::Vector_3 cross = CGAL::cross_product(u, v);
+      const double twice_area = std::sqrt(cross.squared_length());
+      if(!(twice_area > 0)) continue; // a degenerate triangle gets no sample
+      total += twice_area / 2;
+      triangles.push_back({a, u, v, cross / twice_area});
+      cumulative_area.push_back(total);
+    }
+  if(triangles.empty()) throw std::runtime_error("the surface " + path + " has no triangle of positive area");
+  const CGAL::Bbox_3 box = CGAL::bbox_3(vertices.begin(), vertices.end());
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, 1e-3 * diagonal);
+  std::vector<fdt3_test::Xyz> points(n);
+  for(fdt3_test::Xyz& q : points) {
+    const std::size_t i = std::min<std::size_t>(
+        std::upper_bound(cumulative_area.begin(), cumulative_area.end(), uniform(rng) * total) -
+            cumulative_area.begin(),
+        triangles.size() - 1);
+    const Triangle& t = triangles[i];
+    // Uniform on the triangle: sqrt of the first variable spreads the samples evenly from the origin vertex out.
+    const double r = std::sqrt(uniform(rng)), w = uniform(rng);
+    const Kernel::Vector_3 p = t.origin + r * (1 - w) * t.u + r * w * t.v + noise(rng) * t.normal;
+    q = {p.x(), p.y(), p.z()};
+  }
+  return points;
+}
+
 // ------------------------------------------------------------------------------------------------ child processes
 
 struct Child_report
@@ -458,10 +524,12 @@ struct Options
   std::vector<std::size_t> sizes = {1000000};
   std::vector<std::string> distributions = {"uniform"};
   std::vector<std::string> engines;   // empty: the engines marked by_default
-  std::vector<int> threads = {2};
+  std::vector<int> threads = {1, 2};
+  std::string surface = FDT3_CGAL_DATA_DIR "/bunny00.off"; // the points of --dist surface
   int rounds = 3;
   bool phases = false;
   bool verbose = false;
+  bool scalar_paths = false;          // our engines with the scalar forms of the predicates forced
   std::string csv_path;               // empty: no CSV; "-": CSV on standard output instead of the table
 };
 
@@ -514,18 +582,24 @@ void print_usage(std::FILE* to)
   std::fprintf(to,
                "usage: delaunay_benchmark [options]\n"
                "  --n LIST        numbers of points, e.g. 1e5,1e6 (default 1e6)\n"
-               "  --dist LIST     uniform, gauss, clusters, sphere, grid, duplicates, offset, tiny, or all\n"
-               "                  (all = the first five; default uniform)\n"
+               "  --dist LIST     uniform, gauss, clusters, sphere, grid, shell, torus, surface, duplicates,\n"
+               "                  offset, tiny, or all (all = the first eight; default uniform); shell: near the\n"
+               "                  unit sphere, torus: near the torus R = 1, r = 0.3 (noise 1e-3 along the normal);\n"
+               "                  surface: sampled by area on --surface, noise 1e-3 of its bounding box diagonal\n"
+               "  --surface FILE  the OFF surface of --dist surface (default %s;\n"
+               "                  missing: that distribution is skipped)\n"
                "  --engines LIST  among %s (default %s)\n"
                "  --rounds R      runs of every engine, interleaved; the table shows the median (default 3)\n"
-               "  --threads LIST  thread counts of the parallel engines (default 2)\n"
+               "  --threads LIST  thread counts of the parallel engines (default 1,2)\n"
                "  --phases        also print our per-phase breakdown (sort, init, walk, cavity, ball, other)\n"
                "  --verbose       also print the attempts of our parallel engine (paper Table 2), one more run per\n"
                "                  --threads value with exactly that many partitions\n"
+               "  --scalar-paths  our engines with the scalar forms of the predicates, as on a processor without\n"
+               "                  AVX2 and FMA (by default they take the AVX2 forms where the processor has them)\n"
                "  --csv FILE      also write the table as comma-separated values to FILE, the machine in lines\n"
                "                  that start with '#' (scripts/plot_benchmark.py draws it); '-': on standard\n"
                "                  output, instead of the table\n",
-               join(engine_names(false)).c_str(), join(engine_names(true)).c_str());
+               FDT3_CGAL_DATA_DIR "/bunny00.off", join(engine_names(false)).c_str(), join(engine_names(true)).c_str());
 }
 
 Options parse_options(int argc, char** argv)
@@ -543,9 +617,15 @@ Options parse_options(int argc, char** argv)
         options.sizes.push_back(static_cast<std::size_t>(parse_number(item, "--n")));
     } else if(option == "--dist") {
       const std::string list = value();
-      options.distributions = list == "all" ? fdt3_test::distribution_names() : split(list);
+      options.distributions = split(list);
+      if(list == "all") {
+        options.distributions = fdt3_test::distribution_names();
+        options.distributions.push_back("surface");
+      }
       for(const std::string& name : options.distributions)
-        fdt3_test::make_points(name, 0); // throws on an unknown name
+        if(name != "surface") fdt3_test::make_points(name, 0); // throws on an unknown name
+    } else if(option == "--surface") {
+      options.surface = value();
     } else if(option == "--engines") {
       options.engines = split(value());
       for(const std::string& name : options.engines)
@@ -563,6 +643,8 @@ Options parse_options(int argc, char** argv)
       options.phases = true;
     } else if(option == "--verbose") {
       options.verbose = true;
+    } else if(option == "--scalar-paths") {
+      options.scalar_paths = true;
     } else if(option == "--csv") {
       options.csv_path = value();
     } else if(option == "--help" || option == "-h") {
@@ -640,6 +722,8 @@ void print_machine(std::FILE* out, const char* prefix)
 #else
   std::fprintf(out, "no TBB");
 #endif
+  std::fprintf(out, ", predicates: %s",
+               CGAL::Fast_Delaunay_triangulation_3_internal::use_avx2_paths() ? "AVX2 and FMA forms" : "scalar forms");
 #ifdef NDEBUG
   std::fprintf(out, ", NDEBUG\n");
 #else
@@ -724,6 +808,7 @@ struct Measurement
   long baseline_kib = 0;        // peak RSS of a child that does nothing
   double load_before = 0;       // load average of the machine when the measurement started
   std::vector<Row> rows;
+  std::string skipped;          // why nothing was measured (the surface file is missing), or empty
 };
 
 Measurement measure(const Options& options, std::size_t n, const std::string& distribution)
@@ -733,7 +818,14 @@ Measurement measure(const Options& options, std::size_t n, const std::string& di
   m.distribution = distribution;
   m.load_before = load_average();
   ::malloc_trim(0); // the previous measurement's points must not stay resident in every child
-  const Points points = fdt3_test::to_points<Point>(fdt3_test::make_points(distribution, n));
+  if(distribution == "surface" && !readable(options.surface)) {
+    m.skipped = "the surface " + options.surface +
+                " is not there (Debian: apt install libcgal-demo, then configure again; or --surface FILE)";
+    return m;
+  }
+  const Points points = fdt3_test::to_points<Point>(distribution == "surface"
+                                                        ? surface_points(options.surface, n)
+                                                        : fdt3_test::make_points(distribution, n));
   m.input_points = points.size();
   m.baseline_kib = run_in_child([] { return Engine_result(); }).peak_kib;
 
@@ -789,6 +881,27 @@ double speedup(const Measurement& m, const Row& row)
   const Row* reference = reference_row(m, row);
   if(!reference || row.seconds.empty()) return 0;
   return median(reference->seconds) / median(row.seconds);
+}
+
+// Speed-up of an insertion row over CGAL's parallel triangulation on as many threads (cgal-par with --threads 1 for
+// the sequential rows), or 0 when that did not run.
+double speedup_over_cgal_parallel(const Measurement& m, const Row& row)
+{
+  if(std::string(row.engine->reference) != "cgal" || row.seconds.empty()) return 0;
+  for(const Row& other : m.rows)
+    if(other.label == "cgal-par" && other.threads == row.threads && !other.seconds.empty())
+      return median(other.seconds) / median(row.seconds);
+  return 0;
+}
+
+// Speed-up of a parallel row over the same engine on 1 thread (with --threads 1 among the thread counts), or 0.
+double speedup_over_one_thread(const Measurement& m, const Row& row)
+{
+  if(!row.engine->parallel || row.threads == 1 || row.seconds.empty()) return 0;
+  for(const Row& other : m.rows)
+    if(other.label == row.label && other.threads == 1 && !other.seconds.empty())
+      return median(other.seconds) / median(row.seconds);
+  return 0;
 }
 
 // Our Table 1 breakdown. `total` is the whole insertion as the benchmark timed it; `other` is what the phases do
@@ -890,8 +1003,8 @@ void print_table(const Measurement& m, int rounds)
               "load average %.2f\n",
               with_commas(m.n).c_str(), m.distribution.c_str(), with_commas(m.input_points).c_str(), rounds,
               rounds == 1 ? "" : "s", mib(m.baseline_kib), m.load_before);
-  std::printf("%-12s %7s %9s %13s %8s %9s %9s\n", "engine", "threads", "seconds", "tetrahedra", "Mtets/s", "peak MiB",
-              "vs cgal");
+  std::printf("%-12s %7s %9s %13s %8s %9s %9s %9s %9s\n", "engine", "threads", "seconds", "tetrahedra", "Mtets/s",
+              "peak MiB", "vs cgal", "vs c-par", "vs 1 thr");
   for(const Row& row : m.rows) {
     if(row.seconds.empty()) {
       std::printf("%-12s %7d   failed: %s\n", row.label.c_str(), row.threads, row.error.c_str());
@@ -901,9 +1014,10 @@ void print_table(const Measurement& m, int rounds)
     std::printf("%-12s %7d %9.3f %13s %8.2f %9.0f", row.label.c_str(), row.threads, t,
                 with_commas(row.finite_cells).c_str(), static_cast<double>(row.finite_cells) / t / 1e6,
                 mib(row.peak_kib));
-    const double s = speedup(m, row);
-    if(s > 0) std::printf(" %8.2fx\n", s);
-    else std::printf(" %9s\n", "-");
+    for(const double s : {speedup(m, row), speedup_over_cgal_parallel(m, row), speedup_over_one_thread(m, row)})
+      if(s > 0) std::printf(" %8.2fx", s);
+      else std::printf(" %9s", "-");
+    std::printf("\n");
   }
   for(const std::string& warning : cell_count_warnings(m)) std::printf("WARNING: %s\n", warning.c_str());
   for(const Row& row : m.rows)
@@ -918,7 +1032,7 @@ void print_csv_header(std::FILE* out)
   std::fprintf(out, "n,distribution,input_points,engine,threads,rounds,median_seconds,finite_cells,mtets_per_second,"
                "peak_mib,baseline_mib,load_average,speedup_vs_cgal,sort_s,init_s,walk_s,cavity_s,ball_s,other_s,"
                "total_s,walk_steps_per_point,cavity_tets_per_point,ball_tets_per_point,conflict_tests_per_point,"
-               "small_cavities,large_cavities\n");
+               "small_cavities,large_cavities,speedup_vs_cgal_par,speedup_vs_1_thread\n");
 }
 
 void print_csv(std::FILE* out, const Measurement& m)
@@ -934,15 +1048,21 @@ void print_csv(std::FILE* out, const Measurement& m)
     const double s = speedup(m, row);
     if(s > 0) std::fprintf(out, "%.4f", s);
     if(!row.has_phases) {
-      std::fprintf(out, ",,,,,,,,,,,,,\n");
-      continue;
+      std::fprintf(out, ",,,,,,,,,,,,");
+    } else {
+      const Phase_split p = phase_split(row);
+      const Phase_report& r = row.phases;
+      std::fprintf(out, ",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f,%llu,%llu", p.sort, p.init,
+                   p.walk, p.cavity, p.ball, p.other, p.total, per_point(r.walk_steps, r),
+                   per_point(r.cavity_tets, r), per_point(r.ball_tets, r), per_point(r.conflict_tests, r),
+                   static_cast<unsigned long long>(r.small_cavities),
+                   static_cast<unsigned long long>(r.large_cavities));
     }
-    const Phase_split p = phase_split(row);
-    const Phase_report& r = row.phases;
-    std::fprintf(out, ",%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f,%llu,%llu\n", p.sort, p.init,
-                 p.walk, p.cavity, p.ball, p.other, p.total, per_point(r.walk_steps, r), per_point(r.cavity_tets, r),
-                 per_point(r.ball_tets, r), per_point(r.conflict_tests, r),
-                 static_cast<unsigned long long>(r.small_cavities), static_cast<unsigned long long>(r.large_cavities));
+    for(const double ratio : {speedup_over_cgal_parallel(m, row), speedup_over_one_thread(m, row)}) {
+      std::fputc(',', out);
+      if(ratio > 0) std::fprintf(out, "%.4f", ratio);
+    }
+    std::fputc('\n', out);
   }
   std::fflush(out);
 }
@@ -959,6 +1079,9 @@ int main(int argc, char** argv)
     print_usage(stderr);
     return 2;
   }
+
+  // Set before the engines' processes are forked: they inherit it.
+  CGAL::Fast_Delaunay_triangulation_3_internal::scalar_paths_forced() = options.scalar_paths;
 
   const bool table = options.csv_path != "-";
   std::FILE* csv = nullptr;
@@ -978,6 +1101,14 @@ int main(int argc, char** argv)
   for(std::size_t n : options.sizes)
     for(const std::string& distribution : options.distributions) {
       const Measurement m = measure(options, n, distribution);
+      if(!m.skipped.empty()) {
+        // Said on every output, so that a table or a CSV without the surface rows says why.
+        std::fprintf(stderr, "delaunay_benchmark: --dist %s skipped: %s\n", distribution.c_str(), m.skipped.c_str());
+        if(table) std::printf("\nn = %s %s points: skipped: %s\n", with_commas(n).c_str(), distribution.c_str(),
+                              m.skipped.c_str());
+        if(csv) std::fprintf(csv, "# %s skipped: %s\n", distribution.c_str(), m.skipped.c_str());
+        continue;
+      }
       all_agree = all_agree && cell_count_warnings(m).empty();
       if(table) print_table(m, options.rounds);
       if(csv) print_csv(csv, m);

@@ -1,6 +1,7 @@
 // Point distributions shared by the tests and the benchmarks: uniform,
-// Gaussian, clustered, on a sphere, shuffled integer grid, with duplicates,
-// far from the origin, tiny.  Deterministic for a given seed.
+// Gaussian, clustered, on a sphere, shuffled integer grid, near a sphere or
+// a torus (noisy scans of closed surfaces), with duplicates, far from the
+// origin, tiny.  Deterministic for a given seed.
 #ifndef CGAL_FDT3_TEST_POINT_SETS_H
 #define CGAL_FDT3_TEST_POINT_SETS_H
 
@@ -60,6 +61,46 @@ inline std::vector<Xyz> sphere_points(std::size_t n, std::uint64_t seed = 4)
     double x, y, z, r;
     do { x = g(rng); y = g(rng); z = g(rng); r = std::sqrt(x * x + y * y + z * z); } while(r < 1e-9);
     q = {x / r, y / r, z / r};
+  }
+  return p;
+}
+
+// Near the unit sphere: uniform directions, each point moved along its
+// normal by a Gaussian of deviation `noise`.  What a scan of a closed
+// surface looks like: nearly all tetrahedra are long and thin, spanning the
+// thin shell.
+inline std::vector<Xyz> shell_points(std::size_t n, double noise = 1e-3, std::uint64_t seed = 9)
+{
+  std::vector<Xyz> p = sphere_points(n, seed);
+  std::mt19937_64 rng(seed + 1);
+  std::normal_distribution<double> g(0.0, noise);
+  for(Xyz& q : p) {
+    const double r = 1 + g(rng);
+    q = {q.x * r, q.y * r, q.z * r};
+  }
+  return p;
+}
+
+// Near the torus of radii R (of the centre circle, around z) and r (of the
+// tube), uniform by area, each point moved along its normal by a Gaussian of
+// deviation `noise`.  The area element is proportional to R + r cos(phi)
+// (phi around the tube), hence the rejection of phi.
+inline std::vector<Xyz> torus_points(std::size_t n, double R = 1.0, double r = 0.3, double noise = 1e-3,
+                                     std::uint64_t seed = 10)
+{
+  const double pi = 3.14159265358979323846;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g(0.0, noise);
+  std::vector<Xyz> p(n);
+  for(Xyz& q : p) {
+    double phi;
+    do phi = 2 * pi * u(rng);
+    while(u(rng) * (R + r) > R + r * std::cos(phi));
+    const double theta = 2 * pi * u(rng);
+    const double tube = r + g(rng);
+    const double ring = R + tube * std::cos(phi);
+    q = {ring * std::cos(theta), ring * std::sin(theta), tube * std::sin(phi)};
   }
   return p;
 }
@@ -131,9 +172,11 @@ inline std::vector<Xyz> tilted_circle_points()
   return p;
 }
 
+// What the benchmark's --dist all runs (the tests name the distributions
+// they use).
 inline std::vector<std::string> distribution_names()
 {
-  return {"uniform", "gauss", "clusters", "sphere", "grid"};
+  return {"uniform", "gauss", "clusters", "sphere", "grid", "shell", "torus"};
 }
 
 inline std::vector<Xyz> make_points(const std::string& name, std::size_t n, std::uint64_t seed = 1)
@@ -143,6 +186,8 @@ inline std::vector<Xyz> make_points(const std::string& name, std::size_t n, std:
   if(name == "clusters") return clustered_points(n, seed + 2);
   if(name == "sphere") return sphere_points(n, seed + 3);
   if(name == "grid") return grid_points(n, seed + 4);
+  if(name == "shell") return shell_points(n, 1e-3, seed + 8);
+  if(name == "torus") return torus_points(n, 1.0, 0.3, 1e-3, seed + 9);
   if(name == "duplicates") return duplicated_points(n, seed + 5);
   if(name == "offset") return offset_points(n, 1e9, seed + 6);
   if(name == "tiny") return scaled_points(n, 1e-9, seed + 7);

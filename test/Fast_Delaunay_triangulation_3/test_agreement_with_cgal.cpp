@@ -124,3 +124,65 @@ TEST(Regression, CosphericalShellForcesLargeCavityFallback)
 }
 
 } // namespace test_agreement_with_cgal
+
+namespace test_agreement_with_cgal {
+
+namespace I = CGAL::Fast_Delaunay_triangulation_3_internal;
+
+// The scalar forms of the predicates while it lives (see use_avx2_paths).
+struct Scalar_paths_forced
+{
+  Scalar_paths_forced() { I::scalar_paths_forced() = true; }
+  ~Scalar_paths_forced() { I::scalar_paths_forced() = false; }
+};
+
+// The points of the finite cells in iteration order: equal for two
+// triangulations only if every cell is in the same slot with its vertices
+// in the same order.
+std::vector<std::array<double, 12>> cells_in_slot_order(const Fast_dt& t)
+{
+  std::vector<std::array<double, 12>> cells;
+  for(auto c = t.finite_cells_begin(); c != t.finite_cells_end(); ++c) {
+    std::array<double, 12> a;
+    for(int i = 0; i < 4; ++i) {
+      const Point p = c->vertex(i)->point();
+      a[3 * i] = p.x(); a[3 * i + 1] = p.y(); a[3 * i + 2] = p.z();
+    }
+    cells.push_back(a);
+  }
+  return cells;
+}
+
+// An insertion chooses the AVX2 forms of the walk's and the cavity search's
+// predicates where the processor has them, the scalar forms elsewhere (or
+// when forced): both must build CGAL's cells, and the same triangulation
+// cell for cell.  The scalar run happens on every machine and build, so
+// that the forms a processor without AVX2 runs stay tested on one with it.
+class Vector_paths : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Vector_paths, ScalarAndAvx2FormsBuildTheSameTriangulation)
+{
+  const std::vector<Point> points = to_points<Point>(make_points(GetParam(), 10000));
+  const Cgal_dt cgal(points.begin(), points.end());
+  std::vector<std::array<double, 12>> scalar_cells;
+  {
+    Scalar_paths_forced scalar;
+    ASSERT_FALSE(I::use_avx2_paths());
+    Fast_dt fast(points.begin(), points.end());
+    ASSERT_TRUE(fast.is_valid(true));
+    EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+    scalar_cells = cells_in_slot_order(fast);
+  }
+  if(!I::processor_has_avx2_and_fma()) GTEST_SKIP() << "no AVX2 and FMA on this processor (or in this build)";
+  ASSERT_TRUE(I::use_avx2_paths());
+  Fast_dt fast(points.begin(), points.end());
+  ASSERT_TRUE(fast.is_valid(true));
+  EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+  EXPECT_TRUE(cells_in_slot_order(fast) == scalar_cells);
+}
+
+INSTANTIATE_TEST_SUITE_P(Distributions, Vector_paths,
+                         ::testing::Values("uniform", "clusters", "sphere", "grid", "shell", "torus", "duplicates",
+                                           "tiny"));
+
+} // namespace test_agreement_with_cgal

@@ -95,6 +95,30 @@ TEST(Parallel_insertion, ReproducibleCellForCell)
   EXPECT_TRUE(cells_in_slot_order(first) == cells_in_slot_order(second));
 }
 
+// The partitioned engine with the scalar forms of the predicates forced and
+// with the forms the processor chooses (AVX2 where it has them): the same
+// triangulation, cell for cell (see test_agreement_with_cgal's Vector_paths).
+TEST(Parallel_insertion, ScalarAndAvx2FormsBuildTheSameTriangulation)
+{
+  namespace I = CGAL::Fast_Delaunay_triangulation_3_internal;
+  for(const char* distribution : {"uniform", "shell"}) {
+    SCOPED_TRACE(distribution);
+    const std::vector<Point> points = to_points<Point>(make_points(distribution, points_per_case, 23));
+    Fast_dt scalar, chosen;
+    scalar.set_number_of_threads(2);
+    chosen.set_number_of_threads(2);
+    I::scalar_paths_forced() = true;
+    scalar.insert(points.begin(), points.end());
+    I::scalar_paths_forced() = false;
+    chosen.insert(points.begin(), points.end());
+    ASSERT_TRUE(scalar.is_valid(true));
+    ASSERT_TRUE(chosen.is_valid(true));
+    EXPECT_TRUE(cells_in_slot_order(scalar) == cells_in_slot_order(chosen));
+    const Cgal_dt cgal(points.begin(), points.end());
+    EXPECT_TRUE(finite_cell_keys(scalar) == finite_cell_keys(cgal));
+  }
+}
+
 TEST(Parallel_insertion, IntoNonEmptyTriangulation)
 {
   const std::vector<Point> points = to_points<Point>(make_points("gauss", 2 * points_per_case, 22));

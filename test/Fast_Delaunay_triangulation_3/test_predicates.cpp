@@ -167,11 +167,20 @@ TEST(Orientation, SignOfCgalsExactPredicate)
 }
 
 #ifdef CGAL_FDT3_SIMD_RECORDS
+// The vector form in a function built for AVX2 (a plain build compiles the
+// test bodies for the baseline processor).
+CGAL_FDT3_TARGET_AVX2 void store_facet_orientations_of_records(const double* a, const double* b, const double* c,
+                                                               const double* d, const double* t, double volumes[4])
+{
+  _mm256_storeu_pd(volumes, P::facet_orientations_of_records(a, b, c, d, t));
+}
+
 // The walk's four facet orientations of a tetrahedron of vertex records
 // against a point, certified by the static filter: every certified sign is
 // CGAL's exact one (random, nearly coplanar, exactly coplanar grid points).
 TEST(Orientation, FacetOrientationsOfRecordsCertifyExactSigns)
 {
+  if(!P::processor_has_avx2_and_fma()) GTEST_SKIP() << "this processor has no AVX2 and FMA";
   Generator g(32);
   std::size_t certified = 0, tested = 0;
   for(const Frame& f : frames()) {
@@ -192,8 +201,8 @@ TEST(Orientation, FacetOrientationsOfRecordsCertifyExactSigns)
       }
       const P::Static_filter filter = tight_static_filter(p);
       double volumes[4];
-      _mm256_storeu_pd(volumes, P::facet_orientations_of_records(records[0].xyz, records[1].xyz, records[2].xyz,
-                                                                 records[3].xyz, p[4].data()));
+      store_facet_orientations_of_records(records[0].xyz, records[1].xyz, records[2].xyz, records[3].xyz,
+                                          p[4].data(), volumes);
       for(int facet = 0; facet < 4; ++facet) {
         std::array<Coordinates, 4> q = {p[0], p[1], p[2], p[3]};
         q[facet] = p[4];
@@ -297,10 +306,19 @@ TEST(Side_of_oriented_sphere, RecordConflictTestAsScalarOne)
       for(const P::Static_filter& filter : {P::Static_filter(), tight_static_filter(p)}) {
         const bool expected = P::finite_cell_in_conflict(p[0].data(), p[1].data(), p[2].data(), p[3].data(),
                                                          p[4].data(), filter);
-        ASSERT_EQ(P::finite_record_in_conflict(records[0].xyz, records[1].xyz, records[2].xyz, records[3].xyz,
-                                               p[4].data(), filter),
+        // Both forms, whichever the build and the processor would choose.
+        ASSERT_EQ(P::finite_record_in_conflict<P::Scalar_paths>(records[0].xyz, records[1].xyz, records[2].xyz,
+                                                                records[3].xyz, p[4].data(), filter),
                   expected)
             << "case " << i;
+#ifdef CGAL_FDT3_SIMD_RECORDS
+        if(P::processor_has_avx2_and_fma()) {
+          ASSERT_EQ(P::finite_record_in_conflict<P::Avx2_paths>(records[0].xyz, records[1].xyz, records[2].xyz,
+                                                                records[3].xyz, p[4].data(), filter),
+                    expected)
+              << "case " << i;
+        }
+#endif
         conflicts += expected ? 1 : 0;
         ++tested;
       }
@@ -615,6 +633,7 @@ TEST(Side_of_oriented_sphere, DoubleDoubleStageCertifiesExactSigns)
     const int scalar = -P::in_sphere_determinant_sign_double_double_scalar(p[0].data(), p[1].data(), p[2].data(),
                                                                            p[3].data(), p[4].data(), bound);
 #ifdef CGAL_FDT3_SIMD_RECORDS
+    if(!P::processor_has_avx2_and_fma()) return scalar;
     const int lanes = -P::in_sphere_determinant_sign_double_double_lanes(p[0].data(), p[1].data(), p[2].data(),
                                                                          p[3].data(), p[4].data(), bound);
     // Different roundings may leave one of them undecided, never opposite.

@@ -191,7 +191,11 @@ struct Mesh_slots
 // triangulation of dimension 3 with ghost tetrahedra, and the point's vertex
 // record has been written; vertex scratch words are 0 at rest.  The
 // sequential instantiation pays nothing for ownership (owns() is constant).
-template <class Ownership = Sequential_ownership, class Slots = Mesh_slots, class Walk = Walk_to_the_end>
+// Paths (Scalar_paths or Avx2_paths) chooses the forms of the walk's and the
+// cavity search's predicates; both build the same triangulation.  A loop of
+// insertions picks it once with with_vector_paths (see insert_in_order).
+template <class Ownership = Sequential_ownership, class Slots = Mesh_slots, class Walk = Walk_to_the_end,
+          class Paths = Default_paths>
 class Delaunay_kernel
 {
 public:
@@ -276,13 +280,12 @@ public:
       const Vertex_id* tv = m_.vertex_ids(t);
       const double* w[4] = {m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), m_.point(tv[3])};
       const int first = static_cast<int>(s_.next_random() & 3);
-#ifdef CGAL_FDT3_SIMD_RECORDS
       // The four facet orientations at once; the bits say which are
       // certified negative (p strictly beyond) or positive by the static filter.
-      const __m256d volumes = facet_orientations_of_records(w[0], w[1], w[2], w[3], p);
-      const __m256d bound = _mm256_set1_pd(filter_.orientation);
-      const int beyond = _mm256_movemask_pd(_mm256_cmp_pd(volumes, -bound, _CMP_LT_OQ));
-      const int before = _mm256_movemask_pd(_mm256_cmp_pd(volumes, bound, _CMP_GT_OQ));
+      int beyond = 0, before = 0;
+#ifdef CGAL_FDT3_SIMD_RECORDS
+      if constexpr(Paths::avx2)
+        certified_facet_sides_of_records(w[0], w[1], w[2], w[3], p, filter_.orientation, beyond, before);
 #endif
       Tet_id next = Tet_id(-1);
       int entry = 0; // the facet of `next` shared with t
@@ -291,14 +294,14 @@ public:
         const Facet_code code = m_.neighbor_code(t, f);
         const Tet_id u = tet_of(code);
         if(u == previous) continue;
-#ifdef CGAL_FDT3_SIMD_RECORDS
-        if(beyond & (1 << f)) {
-          next = u;
-          entry = facet_of(code);
-          break;
+        if constexpr(Paths::avx2) {
+          if(beyond & (1 << f)) {
+            next = u;
+            entry = facet_of(code);
+            break;
+          }
+          if(before & (1 << f)) continue;
         }
-        if(before & (1 << f)) continue;
-#endif
         const double* q[4] = {w[0], w[1], w[2], w[3]};
         q[f] = p;
         if(orientation(filter_, q[0], q[1], q[2], q[3]) < 0) {
@@ -330,8 +333,8 @@ public:
     }
     if(tv[3] == ghost_vertex)
       return ghost_cell_in_conflict(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]), p, filter_);
-    return finite_record_in_conflict(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]),
-                                     m_.point(tv[3]), p, filter_);
+    return finite_record_in_conflict<Paths>(m_.point(tv[0]), m_.point(tv[1]), m_.point(tv[2]),
+                                            m_.point(tv[3]), p, filter_);
   }
 
   // CAVITY alone, as a query (CGAL's find_conflicts): the tetrahedra in
@@ -757,6 +760,7 @@ struct No_progress_report
 // duplicate_of[v - first_new] receives the vertex it equals.  With step > 0,
 // report(i) follows the first i points every `step` points (the loop is cut
 // into chunks, so the per-point path is unchanged and reads no clock).
+// The predicates' forms are chosen once, here (with_vector_paths).
 template <class Report = No_progress_report>
 void insert_in_order(Flat_storage& m, const std::vector<Vertex_id>& points, Vertex_id first_new,
                      std::vector<Vertex_id>& duplicate_of, Tet_id& hint, const Static_filter& filter,
@@ -765,23 +769,26 @@ void insert_in_order(Flat_storage& m, const std::vector<Vertex_id>& points, Vert
 {
   Insertion_scratch scratch;
   scratch.timed = timed;
-  Delaunay_kernel<> kernel(m, scratch, Mesh_slots{&m}, filter, sub_filter);
   if(!m.is_live(hint)) hint = m.first_live_tet();
-  const std::size_t n = points.size();
-  const std::size_t chunk = step == 0 ? n : step;
-  for(std::size_t begin = 0; begin < n; begin += chunk) {
-    const std::size_t end = std::min(n, begin + chunk);
-    for(std::size_t i = begin; i < end; ++i) {
-      const Vertex_id v = points[i];
-      const double* next = i + 1 < n ? m.point(points[i + 1]) : nullptr;
-      Vertex_id existing = ghost_vertex;
-      if(kernel.insert(v, hint, existing, next) == Insertion_result::duplicate) {
-        CGAL_assertion(v >= first_new);
-        duplicate_of[v - first_new] = existing;
+  with_vector_paths([&](auto paths) {
+    Delaunay_kernel<Sequential_ownership, Mesh_slots, Walk_to_the_end, decltype(paths)> kernel(
+        m, scratch, Mesh_slots{&m}, filter, sub_filter);
+    const std::size_t n = points.size();
+    const std::size_t chunk = step == 0 ? n : step;
+    for(std::size_t begin = 0; begin < n; begin += chunk) {
+      const std::size_t end = std::min(n, begin + chunk);
+      for(std::size_t i = begin; i < end; ++i) {
+        const Vertex_id v = points[i];
+        const double* next = i + 1 < n ? m.point(points[i + 1]) : nullptr;
+        Vertex_id existing = ghost_vertex;
+        if(kernel.insert(v, hint, existing, next) == Insertion_result::duplicate) {
+          CGAL_assertion(v >= first_new);
+          duplicate_of[v - first_new] = existing;
+        }
       }
+      if(step != 0) report(end);
     }
-    if(step != 0) report(end);
-  }
+  });
   m.live_tets += scratch.live_delta;
   m.ghost_tets += scratch.ghost_delta;
   stats.add(scratch.stats);

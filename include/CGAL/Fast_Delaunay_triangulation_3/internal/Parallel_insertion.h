@@ -101,8 +101,10 @@ struct Partition_slots
 
 // The per-point step of Partitioned_insertion, here the Delaunay kernel's.
 // A policy provides
-//   Kernel<Ownership, Slots>   the kernel a partition (or the sequential
-//                              finish) runs;
+//   Kernel<Ownership, Slots, Paths>
+//                              the kernel a partition (or the sequential
+//                              finish) runs, with the predicates' forms
+//                              Paths (chosen once per run of points);
 //   prepare(partitions, slots) called before the kernels run: room for
 //                              `partitions` concurrent users and per-slot
 //                              data for `slots` tetrahedron slots;
@@ -113,8 +115,8 @@ struct Partition_slots
 //                              follows v in its run (or null).
 struct Delaunay_point_insertion
 {
-  template <class Ownership, class Slots>
-  using Kernel = Delaunay_kernel<Ownership, Slots>;
+  template <class Ownership, class Slots, class Paths = Default_paths>
+  using Kernel = Delaunay_kernel<Ownership, Slots, Walk_to_the_end, Paths>;
 
   void prepare(int, std::size_t) {}
 
@@ -263,14 +265,16 @@ private:
     policy.prepare(1, m_.number_of_slots());
     Insertion_scratch scratch;
     scratch.timed = timed_;
-    typename Policy::template Kernel<Sequential_ownership, Mesh_slots> kernel(m_, scratch, Mesh_slots{&m_},
-                                                                              filter_, sub_filter_);
     if(!m_.is_live(hint)) hint = m_.first_live_tet();
     std::vector<Vertex_id> failures;
     const std::size_t before = settled_;
     const std::function<void(std::size_t)> report = [&](std::size_t done) { progress_(before + done); };
-    insert_run(policy, kernel, 0, points.data(), points.data() + points.size(), first_new, duplicate_of, hint,
-               failures, progress_ ? &report : nullptr);
+    with_vector_paths([&](auto paths) {
+      typename Policy::template Kernel<Sequential_ownership, Mesh_slots, decltype(paths)> kernel(
+          m_, scratch, Mesh_slots{&m_}, filter_, sub_filter_);
+      insert_run(policy, kernel, 0, points.data(), points.data() + points.size(), first_new, duplicate_of, hint,
+                 failures, progress_ ? &report : nullptr);
+    });
     CGAL_assertion(failures.empty()); // only a partition aborts
     m_.live_tets += scratch.live_delta;
     m_.ghost_tets += scratch.ghost_delta;
@@ -570,13 +574,15 @@ private:
       Partition_ownership ownership;
       ownership.partition_of_vertex = partition_of_vertex_.data();
       ownership.partition = static_cast<std::uint8_t>(j);
-      typename Policy::template Kernel<Partition_ownership, Partition_slots> kernel(
-          m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1], &m_.tets}, filter_,
-          sub_filter_, ownership);
-      Tet_id hint = hints[j];
-      insert_run(policy, kernel, j, sorted.data() + cut[j], sorted.data() + cut[j + 1], first_new, duplicate_of,
-                 hint, failures[j], j == 0 && progress_ ? &report : nullptr);
-      next_fresh[j] = kernel.slots().next_fresh;
+      with_vector_paths([&](auto paths) {
+        typename Policy::template Kernel<Partition_ownership, Partition_slots, decltype(paths)> kernel(
+            m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1], &m_.tets}, filter_,
+            sub_filter_, ownership);
+        Tet_id hint = hints[j];
+        insert_run(policy, kernel, j, sorted.data() + cut[j], sorted.data() + cut[j + 1], first_new, duplicate_of,
+                   hint, failures[j], j == 0 && progress_ ? &report : nullptr);
+        next_fresh[j] = kernel.slots().next_fresh;
+      });
     });
 
     // Unused fresh slots and the partitions' free lists go back to the mesh.

@@ -112,8 +112,8 @@ inline bool circumcentre(const double* a, const double* b, const double* c, cons
 class Constrained_point_insertion
 {
 public:
-  template <class Ownership, class Slots>
-  using Kernel = Delaunay_kernel<Ownership, Slots, Walk_giving_up>;
+  template <class Ownership, class Slots, class Paths = Default_paths>
+  using Kernel = Delaunay_kernel<Ownership, Slots, Walk_giving_up, Paths>;
 
   Constrained_point_insertion(Constrained_mesh& cm, double min_edge_ratio,
                               const std::vector<Refinement_point>& batch, Vertex_id first_new)
