@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
-# The distributed triangulation (fast_delaunay_3_mpi) under mpirun, ranks x threads side by side: seconds per phase
-# (the slowest rank's), exchange rounds, bytes sent per point, ghosts as a share of the points, peak memory per rank.
-# The configurations are interleaved in every round and the table gives medians; the same points (uniform in the
-# unit cube, fixed seed, written once as .xyz, which every rank reads in parallel, its own byte range) for all.
-#
-#   distributed_benchmark.py PROGRAM [--n 1e6,1e7] [--rounds 3] [--configs 1x1,1x2,2x1,4x1] [--dir DIR]
-#
-# A configuration RxT is R ranks with T threads each; ranks are not bound to cores (--bind-to none), so that a
-# rank's threads may spread, and more ranks than cores are allowed (the 2-core VM runs 4 ranks oversubscribed).
+"""The distributed triangulation (fast_delaunay_3_mpi) under mpirun, ranks x threads side by side: seconds per phase
+(the slowest rank's), exchange rounds, bytes sent per point, ghosts as a share of the points, peak memory per rank.
+The configurations are interleaved in every round and the table gives medians; the same points (uniform in the
+unit cube, fixed seed, written once as .xyz, which every rank reads in parallel, its own byte range) for all.
+
+  distributed_benchmark.py PROGRAM [--n 1e6,1e7] [--rounds 3] [--configs 1x1,1x2,2x1,4x1] [--dir DIR]
+
+A configuration RxT is R ranks with T threads each; ranks are not bound to cores (--bind-to none), so that a
+rank's threads may spread, and more ranks than cores are allowed (the 2-core VM runs 4 ranks oversubscribed).
+"""
 
 import argparse
 import json
@@ -42,7 +43,7 @@ def run(program, path, ranks, threads):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
     parser.add_argument("program")
     parser.add_argument("--n", default="1e6,1e7")
     parser.add_argument("--rounds", type=int, default=3)
