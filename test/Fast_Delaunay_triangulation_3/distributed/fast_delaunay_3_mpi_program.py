@@ -105,20 +105,20 @@ for piece in sorted(glob.glob(os.path.join(work, "mesh.*.msh"))):
     coordinates = np.array([[float(x) for x in l.split()] for l in lines[nodes + 3 + count:nodes + 3 + 2 * count]])
     check(np.allclose(coordinates, points[np.array(tags) - 1]), "%s: node tags are point numbers + 1" % piece)
 
-bad = os.path.join(work, "bad.xyz")
-with open(bad, "w") as out:
-    for p in points[:3000]:
-        out.write("%.17g %.17g %.17g\n" % tuple(p))
-    out.write("0.5 0.5 x\n")
-r = run(3, bad)
+def points_then(name, last_line):
+    path = os.path.join(work, name)
+    with open(path, "w") as out:
+        for p in points[:3000]:
+            out.write("%.17g %.17g %.17g\n" % tuple(p))
+        out.write(last_line + "\n")
+    return path
+
+
+r = run(3, points_then("bad.xyz", "0.5 0.5 x"))
 check(r.returncode == 1, "bad line: exit status %d" % r.returncode)
 check(r.stderr.count("bad.xyz:3001: 'x' is not a number") == 1, "bad line: reported once, with its line: %r" % r.stderr)
 
-nan = os.path.join(work, "nan.xyz")
-with open(nan, "w") as out:
-    for p in points[:3000]:
-        out.write("%.17g %.17g %.17g\n" % tuple(p))
-    out.write("0.5 nan 0.5\n")
+nan = points_then("nan.xyz", "0.5 nan 0.5")
 r = run(2, nan)
 check(r.returncode == 1, "NaN: exit status %d" % r.returncode)
 check(r.stderr.count("point 3000 (on rank 1) has a coordinate that is not a finite number") == 1,

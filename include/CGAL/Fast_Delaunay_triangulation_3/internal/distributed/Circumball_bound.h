@@ -44,7 +44,7 @@ struct Ball_bound
 };
 
 template <class NT>
-void circumcenter_offset(const double* p[4], NT offset[3], NT& denominator)
+void circumcenter_offset(const double* const p[4], NT offset[3], NT& denominator)
 {
   NT a[3], b[3], c[3];
   for(int k = 0; k < 3; ++k) {
@@ -71,7 +71,9 @@ inline Ball_bound ball_around(const double* p0, const Interval_nt<false> z[3])
   I r2 = 0;
   for(int k = 0; k < 3; ++k) {
     ball.center[k] = 0.5 * z[k].inf() + 0.5 * z[k].sup();
-    const double half = 0.5 * (z[k].sup() - z[k].inf());
+    // The rounded midpoint may be off the middle by an ulp, as much as the box's half-width far from the origin:
+    // the distance to the farther end, rounded up, is what the bound needs.
+    const double half = std::max(z[k].sup() - ball.center[k], ball.center[k] - z[k].inf());
     half_diagonal2 += half * half;
     const I d = z[k] - I(p0[k]);
     r2 += d * d;
@@ -91,29 +93,27 @@ inline Ball_bound ball_around(const double* p0, const Interval_nt<false> z[3])
 // delta = (8000 u M^4 + |num / den| 2000 u M^3) / |den| plus the last division and addition, and the ball of
 // centre c~ and radius |c~ - p0| + 2 delta, rounded up, contains the true one. Refused when |den| < 10^4 u M^3 or
 // when delta is not small beside the radius: there the intervals or the rationals decide.
-inline bool fast_circumball_bound(const double* p[4], Ball_bound& ball)
+// How loose a bound may be before a tighter one is computed: 1e-9 of the radius, or 64 ulps of the coordinates.
+inline double tolerated_slack(double radius, const double* p0)
+{
+  return std::max(1e-9 * radius,
+                  64 * std::numeric_limits<double>::epsilon() *
+                      std::max({std::abs(p0[0]), std::abs(p0[1]), std::abs(p0[2])}));
+}
+
+inline bool fast_circumball_bound(const double* const p[4], Ball_bound& ball)
 {
   constexpr double u = std::numeric_limits<double>::epsilon() / 2;
-  double a[3], b[3], c[3];
   double m = 0;
-  for(int k = 0; k < 3; ++k) {
-    a[k] = p[1][k] - p[0][k];
-    b[k] = p[2][k] - p[0][k];
-    c[k] = p[3][k] - p[0][k];
-    m = std::max({m, std::abs(a[k]), std::abs(b[k]), std::abs(c[k])});
-  }
-  const double bc[3] = {b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0]};
-  const double ca[3] = {c[1] * a[2] - c[2] * a[1], c[2] * a[0] - c[0] * a[2], c[0] * a[1] - c[1] * a[0]};
-  const double ab[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  const double a2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
-  const double b2 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-  const double c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-  const double den = 2 * (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]);
+  for(int k = 0; k < 3; ++k)
+    for(int v = 1; v < 4; ++v) m = std::max(m, std::abs(p[v][k] - p[0][k]));
+  double offset[3], den;
+  circumcenter_offset(p, offset, den);
   const double m3 = m * m * m;
   if(!(std::abs(den) >= 1e4 * u * m3) || !std::isfinite(m3 * m)) return false;
-  double offset2 = 0, offset[3];
+  double offset2 = 0;
   for(int k = 0; k < 3; ++k) {
-    offset[k] = (a2 * bc[k] + b2 * ca[k] + c2 * ab[k]) / den;
+    offset[k] /= den;
     offset2 += offset[k] * offset[k];
   }
   const double offset_norm = std::sqrt(offset2);
@@ -124,15 +124,17 @@ inline bool fast_circumball_bound(const double* p[4], Ball_bound& ball)
   const double radius = std::sqrt(dx * dx + dy * dy + dz * dz);
   // A bound looser than 1e-9 of the radius is left to the intervals: the shell it adds around a large ball holds
   // points that the answering rank must then test with the exact predicate, one by one, and the predicate's filter
-  // fails on such nearly cospherical points (measured: 26 s of 31 on 4e6 points, two ranks).
-  if(!(2 * delta <= 1e-9 * radius)) return false;
+  // fails on such nearly cospherical points (measured: 26 s of 31 on 4e6 points, two ranks). A few ulps of the
+  // coordinates are always allowed: no bound in doubles is tighter far from the origin, where points are that
+  // coarse anyway (without it, 2000 points at 1e9 took the rationals for every cell).
+  if(!(2 * delta <= tolerated_slack(radius, p[0]))) return false;
   ball.radius = (radius + 2 * delta) * (1 + 16 * u);
   return ball.is_finite();
 }
 
 // Must run with the FPU rounding upward (a Protect_FPU_rounding<true> in the caller's scope), as Interval_nt<false>
 // requires; the caller sets it once for a whole scan of cells.
-inline Ball_bound circumball_bound(const double* p[4])
+inline Ball_bound circumball_bound(const double* const p[4])
 {
   typedef Interval_nt<false> I;
   {
@@ -147,7 +149,7 @@ inline Ball_bound circumball_bound(const double* p[4])
     const Ball_bound ball = ball_around(p[0], z);
     // Wide intervals mean bad conditioning (a flat tetrahedron): the exact centre gives a tighter bound.
     const double widest = std::max({z[0].sup() - z[0].inf(), z[1].sup() - z[1].inf(), z[2].sup() - z[2].inf()});
-    if(ball.is_finite() && widest <= 1e-9 * ball.radius) return ball;
+    if(ball.is_finite() && widest <= tolerated_slack(ball.radius, p[0])) return ball;
   }
   I z[3];
   {
