@@ -14,16 +14,19 @@
 //   2. local      each rank triangulates its own points with the shared-memory engine (its own threads);
 //   3. hull round every rank sends the vertices of its local convex hull (all its points if they are not in
 //                 general position in 3D) to every rank: afterwards every rank's hull is the global hull;
-//   4. ball rounds for every new cell with a vertex of its own, a rank sends a ball bounding its closed
-//                 circumscribed ball to the ranks that own points near it; they answer with those of their points
-//                 in the ball that they have not sent it yet; the answers are inserted as ghosts, and their new
-//                 cells are checked in the next round, until no rank receives a point.
+//   4. ball rounds for every new cell with a vertex of its own, a rank sends the cell's corners to the ranks that
+//                 own points near its circumscribed ball (a conservative bound of the ball against a gathered grid
+//                 of occupied cells); each answers with the one point of its own in the closed ball, by the exact
+//                 predicate, that is nearest to the cell and not sent before, and says whether more may be left;
+//                 the answers are inserted as ghosts, and their new cells, and the cells that survived an answer
+//                 that left points behind, are asked about in the next round, until no rank receives a point.
 // Why the result is exact: after the last round, every finite cell of rank i with a vertex p of rank i has a
-// circumscribed ball that holds no point of any rank outside rank i's set (every rank whose points could lie in it
-// was asked, and sent them all), so it is a cell of the global triangulation; every infinite cell next to p has a
-// hull facet of the global hull, shared with such a finite cell. So the star of p in rank i's triangulation is made
-// of global cells and is complete around p, hence is p's star in the global triangulation. A cell is owned by the
-// rank owning its vertex of smallest global id: it lies in that vertex's star, so exactly one rank reports it.
+// closed circumscribed ball that holds no point of any rank outside rank i's set (every rank whose points could lie
+// in it was asked until it had nothing left to send), so it is a cell of the global triangulation (the symbolic
+// perturbation decides ties from the points alone); every infinite cell next to p shares with such a finite cell a
+// facet of the global hull. So the star of p in rank i's triangulation is made of global cells and is complete
+// around p, hence is p's star in the global triangulation. A cell is owned by the rank owning its vertex of
+// smallest global id: it lies in that vertex's star, so exactly one rank reports it.
 //
 // Points named by a global id (their position in the input); a point given more than once is stored once, under its
 // smallest id, by the rank the partition gives it to (duplicates() lists the others there). Coordinates that are
