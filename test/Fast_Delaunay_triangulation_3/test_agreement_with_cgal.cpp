@@ -136,22 +136,7 @@ struct Scalar_paths_forced
   ~Scalar_paths_forced() { I::scalar_paths_forced() = false; }
 };
 
-// The points of the finite cells in iteration order: equal for two
-// triangulations only if every cell is in the same slot with its vertices
-// in the same order.
-std::vector<std::array<double, 12>> cells_in_slot_order(const Fast_dt& t)
-{
-  std::vector<std::array<double, 12>> cells;
-  for(auto c = t.finite_cells_begin(); c != t.finite_cells_end(); ++c) {
-    std::array<double, 12> a;
-    for(int i = 0; i < 4; ++i) {
-      const Point p = c->vertex(i)->point();
-      a[3 * i] = p.x(); a[3 * i + 1] = p.y(); a[3 * i + 2] = p.z();
-    }
-    cells.push_back(a);
-  }
-  return cells;
-}
+using fdt3_test::cells_in_slot_order;
 
 // An insertion chooses the AVX2 forms of the walk's and the cavity search's
 // predicates where the processor has them, the scalar forms elsewhere (or

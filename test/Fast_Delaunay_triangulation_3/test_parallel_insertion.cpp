@@ -68,21 +68,7 @@ INSTANTIATE_TEST_SUITE_P(Distributions, Parallel_agreement, ::testing::ValuesIn(
                            return info.param.distribution + "_" + std::to_string(info.param.threads);
                          });
 
-// The vertex ids of the cells in iteration order: equal for two runs only if
-// the engine put every cell in the same slot.
-std::vector<std::array<double, 12>> cells_in_slot_order(const Fast_dt& t)
-{
-  std::vector<std::array<double, 12>> cells;
-  for(auto c = t.finite_cells_begin(); c != t.finite_cells_end(); ++c) {
-    std::array<double, 12> a;
-    for(int i = 0; i < 4; ++i) {
-      const Point p = c->vertex(i)->point();
-      a[3 * i] = p.x(); a[3 * i + 1] = p.y(); a[3 * i + 2] = p.z();
-    }
-    cells.push_back(a);
-  }
-  return cells;
-}
+using fdt3_test::cells_in_slot_order;
 
 TEST(Parallel_insertion, ReproducibleCellForCell)
 {

@@ -290,6 +290,25 @@ void expect_same_as_cgal(const Tr& tr, const Cgal_dt& cgal)
   expect_locally_delaunay(tr);
 }
 
+// The points of the finite cells in iteration order: equal for two triangulations only if every cell is in the
+// same slot with its vertices in the same order (what reproducibility and the choice of predicate forms promise).
+template <class Tr>
+std::vector<std::array<double, 12>> cells_in_slot_order(const Tr& t)
+{
+  std::vector<std::array<double, 12>> cells;
+  for(auto c = t.finite_cells_begin(); c != t.finite_cells_end(); ++c) {
+    std::array<double, 12> a;
+    for(int i = 0; i < 4; ++i) {
+      const auto p = c->vertex(i)->point();
+      a[3 * i] = CGAL::to_double(p.x());
+      a[3 * i + 1] = CGAL::to_double(p.y());
+      a[3 * i + 2] = CGAL::to_double(p.z());
+    }
+    cells.push_back(a);
+  }
+  return cells;
+}
+
 } // namespace fdt3_test
 
 #endif
