@@ -180,13 +180,6 @@ Share read_and_scatter(const Communicator& comm, const std::string& path)
   return share;
 }
 
-// The same complaint on every rank (the lowest rank's), or empty.
-std::string agreed_complaint(const Communicator& comm, const std::string& complaint)
-{
-  const std::uint64_t lowest = comm.min(complaint.empty() ? std::uint64_t(comm.size()) : std::uint64_t(comm.rank()));
-  return lowest == std::uint64_t(comm.size()) ? std::string() : comm.broadcast(complaint, int(lowest));
-}
-
 double peak_memory_gib()
 {
   rusage usage{};
@@ -301,7 +294,7 @@ int run(const Communicator& comm, const Options& o)
     const std::uint64_t first_line = comm.exclusive_prefix_sum(share.lines);
     if(share.bad_line > 0) complaint = o.points + ":" + std::to_string(first_line + share.bad_line) + ": " + complaint;
   }
-  complaint = agreed_complaint(comm, complaint);
+  complaint = comm.lowest_rank_complaint(complaint);
   if(!complaint.empty()) {
     if(comm.rank() == 0) std::fprintf(stderr, "fast_delaunay_3_mpi: %s\n", complaint.c_str());
     return 1;
@@ -313,7 +306,7 @@ int run(const Communicator& comm, const Options& o)
   try {
     const Distributed dt(comm.get(), share.xyz, options);
     share = Share();
-    complaint = agreed_complaint(comm, write_outputs(comm, o, dt));
+    complaint = comm.lowest_rank_complaint(write_outputs(comm, o, dt));
     if(!complaint.empty()) {
       if(comm.rank() == 0) std::fprintf(stderr, "fast_delaunay_3_mpi: %s\n", complaint.c_str());
       return 1;

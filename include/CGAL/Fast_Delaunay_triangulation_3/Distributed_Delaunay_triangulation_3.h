@@ -269,9 +269,8 @@ private:
   // The lowest rank with a complaint says it, every rank throws it; nothing is built.
   void agree_on_error(const std::string& complaint) const
   {
-    const std::uint64_t lowest = comm_.min(complaint.empty() ? std::uint64_t(comm_.size()) : std::uint64_t(comm_.rank()));
-    if(lowest == std::uint64_t(comm_.size())) return;
-    throw Distributed_input_error(comm_.broadcast(complaint, int(lowest)));
+    const std::string agreed = comm_.lowest_rank_complaint(complaint);
+    if(!agreed.empty()) throw Distributed_input_error(agreed);
   }
 
   void check_input(const std::vector<double>& xyz, const std::vector<Global_id>& ids) const
@@ -367,16 +366,22 @@ private:
     owner_of_[v.index()] = owner;
   }
 
+  // The vertex of each record, in record order (an equal point's vertex for a duplicate).
+  std::vector<Vertex_handle> insert_records(const std::vector<Point_record>& records)
+  {
+    std::vector<Point> points;
+    points.reserve(records.size());
+    for(const Point_record& r : records) points.push_back(Point(r.xyz[0], r.xyz[1], r.xyz[2]));
+    std::vector<Vertex_handle> vertices;
+    vertices.reserve(records.size());
+    local_.insert_and_give_vertices(points.begin(), points.end(), std::back_inserter(vertices));
+    return vertices;
+  }
+
   // Each own vertex carries the smallest id of its equal points; own_xyz_ / own_vertices_ list it once.
   void triangulate_own_points(const std::vector<Point_record>& own)
   {
-    std::vector<Point> points;
-    points.reserve(own.size());
-    for(const Point_record& r : own) points.push_back(Point(r.xyz[0], r.xyz[1], r.xyz[2]));
-    std::vector<Vertex_handle> vertices;
-    vertices.reserve(own.size());
-    local_.insert_and_give_vertices(points.begin(), points.end(), std::back_inserter(vertices));
-    points = std::vector<Point>();
+    const std::vector<Vertex_handle> vertices = insert_records(own);
     global_id_of_.assign(std::size_t(local_.number_of_vertices()) + 1, std::numeric_limits<Global_id>::max());
     owner_of_.assign(global_id_of_.size(), -1);
     for(std::size_t i = 0; i < own.size(); ++i) {
@@ -406,12 +411,7 @@ private:
   // Inserts other ranks' points; records[from[r], from[r + 1]) come from rank r. Returns the new vertices.
   std::vector<Vertex_handle> insert_ghosts(const std::vector<Point_record>& records, const std::vector<std::size_t>& from)
   {
-    std::vector<Point> points;
-    points.reserve(records.size());
-    for(const Point_record& r : records) points.push_back(Point(r.xyz[0], r.xyz[1], r.xyz[2]));
-    std::vector<Vertex_handle> vertices;
-    vertices.reserve(records.size());
-    local_.insert_and_give_vertices(points.begin(), points.end(), std::back_inserter(vertices));
+    const std::vector<Vertex_handle> vertices = insert_records(records);
     for(int r = 0; r < comm_.size(); ++r)
       for(std::size_t k = from[r]; k < from[r + 1]; ++k) remember(vertices[k], records[k].id, r);
     statistics_.ghost_points += vertices.size();

@@ -171,6 +171,14 @@ public:
     return s;
   }
 
+  // The complaint of the lowest rank that has one (an empty string: none), on every rank: so that bad input is
+  // reported with the same words everywhere and every rank leaves the same collective step.
+  std::string lowest_rank_complaint(const std::string& complaint) const
+  {
+    const std::uint64_t lowest = min(complaint.empty() ? std::uint64_t(size_) : std::uint64_t(rank_));
+    return lowest == std::uint64_t(size_) ? std::string() : broadcast(complaint, int(lowest));
+  }
+
 private:
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1;
