@@ -1,11 +1,14 @@
 // Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// fast_mesh_3 INPUT... -o OUTPUT [--size H] [--threads K] [--quiet]
+// fast_mesh_3 INPUT... -o OUTPUT [--size H] [--threads K] [--optimize 0|1]
+//             [--quality-threshold G] [--quiet]
 //
 // Meshes the volumes bounded by the closed surfaces of the input files (OFF,
-// STL, OBJ, PLY) with the Delaunay-refinement mesher of the paper's §4 and
-// writes OUTPUT as Medit (.mesh), VTK (.vtu) or Gmsh 4.1 (.msh), by extension.
+// STL, OBJ, PLY) with the Delaunay-refinement mesher of the paper's §4,
+// improves the tetrahedra under the gamma threshold (unless --optimize 0)
+// and writes OUTPUT as Medit (.mesh), VTK (.vtu) or Gmsh 4.1 (.msh), by
+// extension.
 // Prints the phases' times, a progress line per refinement pass (one line
 // redrawn in place when stdout is a terminal) and the quality report,
 // unless --quiet.
@@ -24,12 +27,15 @@ namespace {
 
 int usage(const char* program)
 {
-  std::cerr << "usage: " << program << " INPUT... -o OUTPUT [--size H] [--threads K] [--quiet]\n"
+  std::cerr << "usage: " << program
+            << " INPUT... -o OUTPUT [--size H] [--threads K] [--optimize 0|1] [--quality-threshold G] [--quiet]\n"
             << "  INPUT   closed triangulated surfaces (.off .stl .obj .ply); nested surfaces give several subdomains\n"
             << "  OUTPUT  .mesh (Medit), .vtu (VTK) or .msh (Gmsh 4.1)\n"
             << "  --size H     maximum mesh size (default: the surface's edge lengths, interpolated)\n"
             << "  --threads K  Moore partitions (threads) of the empty mesh and of every refinement batch;\n"
             << "               the same input and K give the same mesh\n"
+            << "  --optimize 0|1  improve the tetrahedra under the threshold after refinement (default 1)\n"
+            << "  --quality-threshold G  gamma = 3 r_in / r_circ to reach, in (0, 1) (default 0.3)\n"
             << "  --quiet      print nothing but errors\n";
   return 2;
 }
@@ -55,6 +61,11 @@ int main(int argc, char** argv)
       if(arg == "-o" || arg == "--output") output = value();
       else if(arg == "--size") options.maximum_size = std::stod(value());
       else if(arg == "--threads") options.threads = std::stoi(value());
+      else if(arg == "--optimize") {
+        const std::string v = value();
+        if(v != "0" && v != "1") throw std::invalid_argument(v);
+        options.optimize = v == "1";
+      } else if(arg == "--quality-threshold") options.quality_threshold = std::stod(value());
       else if(arg == "--quiet") quiet = true;
       else if(arg == "-h" || arg == "--help") return usage(argv[0]);
       else if(!arg.empty() && arg[0] == '-') {
@@ -67,8 +78,9 @@ int main(int argc, char** argv)
     }
   }
   if(inputs.empty() || output.empty()) return usage(argv[0]);
-  if(!(options.maximum_size > 0) || options.threads < 1) {
-    std::cerr << "fast_mesh_3: --size must be positive and --threads at least 1\n";
+  if(!(options.maximum_size > 0) || options.threads < 1 ||
+     !(options.quality_threshold > 0 && options.quality_threshold < 1)) {
+    std::cerr << "fast_mesh_3: --size must be positive, --threads at least 1 and --quality-threshold in (0, 1)\n";
     return 2;
   }
   fdt3_tools::Progress_bar bar(stdout, !quiet);
@@ -110,7 +122,23 @@ int main(int argc, char** argv)
                 << " partitioned attempts)\n"
                 << "  sample, filter, insert " << stats.sample_seconds << " s, " << stats.filter_seconds << " s, "
                 << stats.insert_seconds << " s\n"
-                << "total (without input)   " << stats.total_seconds << " s, "
+                << "improvement             " << stats.improvement_seconds << " s";
+      if(options.optimize) {
+        const auto& im = stats.improvement;
+        std::cout << " (" << im.passes << " passes: " << im.edge_removals << " edge removals, " << im.face_removals
+                  << " face removals, " << im.relocations << " relocations, " << im.deferred
+                  << " deferred between partitions)\n"
+                  << "  tetrahedra under gamma " << options.quality_threshold << ": " << im.bad_before << " before, "
+                  << im.bad_after << " after (" << im.bad_after_on_surface
+                  << " with all four vertices on the surface); min gamma " << im.min_gamma_before << " -> "
+                  << im.min_gamma_after << "\n"
+                  << "  smallest dihedral angle " << im.min_dihedral_before << " -> " << im.min_dihedral_after
+                  << " degrees; tetrahedra under 10 degrees " << im.below_10_degrees_before << " -> "
+                  << im.below_10_degrees_after << "\n";
+      } else {
+        std::cout << " (--optimize 0)\n";
+      }
+      std::cout << "total (without input)   " << stats.total_seconds << " s, "
                 << (stats.total_seconds > 0 ? mesh.tetrahedra.size() / stats.total_seconds : 0)
                 << " tetrahedra per second\n";
       CGAL::Fast_mesher_3::print_quality_report(std::cout, CGAL::Fast_mesher_3::quality_report(mesh));

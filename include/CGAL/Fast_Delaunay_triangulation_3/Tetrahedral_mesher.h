@@ -32,6 +32,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Boundary_recovery.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/C3t3_conversion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Constrained_mesh.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Mesh_improvement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Mesh_writers.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Quality_report.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Refinement.h>
@@ -72,6 +73,13 @@ struct Mesher_options
   double radius_ratio = 1.4;
   double min_edge_ratio = 0.7;
   int max_refinement_passes = 200;
+  // Mesh improvement after refinement (Mesh_improvement.h): edge and face
+  // removals and vertex relocation on every tetrahedron whose gamma =
+  // 3 r_in / r_circ is under quality_threshold (Gmsh's default target),
+  // with the same partitions as refinement.  Off: the refined Delaunay mesh.
+  bool optimize = true;
+  double quality_threshold = 0.3;
+  int max_improvement_passes = 10;
   // Called after each refinement pass with (pass number, points inserted,
   // tetrahedra in the volumes); the library itself prints nothing.
   std::function<void(int, std::size_t, std::size_t)> progress;
@@ -81,7 +89,7 @@ struct Mesher_options
 struct Mesher_statistics
 {
   double input_seconds = 0, empty_mesh_seconds = 0, recovery_seconds = 0, colouring_seconds = 0,
-         refinement_seconds = 0, total_seconds = 0;
+         refinement_seconds = 0, improvement_seconds = 0, total_seconds = 0;
   std::size_t missing_triangles = 0; // input triangles absent from the empty mesh
   bool used_tetgen = false;
   std::size_t recovery_region_tetrahedra = 0; // empty-mesh tetrahedra re-meshed by the local recovery
@@ -98,6 +106,8 @@ struct Mesher_statistics
   // partitions, and the number of such attempts (the rest is sequential).
   std::size_t points_settled_in_partitions = 0;
   std::size_t partitioned_attempts = 0;
+  // What the improvement did; all zero when options.optimize is off.
+  Fast_Delaunay_triangulation_3_internal::mesher::Improvement_statistics improvement;
 };
 
 namespace mesher_detail {
@@ -159,6 +169,14 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
     for(const auto& attempt : pass.attempts) stats.partitioned_attempts += attempt.partitions > 1 ? 1 : 0;
   }
   stats.refinement_seconds = seconds_since(t1);
+  if(options.optimize) {
+    Improvement_options improvement;
+    improvement.quality_threshold = options.quality_threshold;
+    improvement.max_passes = options.max_improvement_passes;
+    improvement.threads = std::max(1, options.threads);
+    stats.improvement = improve_mesh(cm, improvement);
+    stats.improvement_seconds = stats.improvement.seconds;
+  }
   scaling.unscale(cm);
   on_mesh(static_cast<const Constrained_mesh&>(cm));
   Tetrahedral_mesh mesh = extract_mesh(cm, soup);

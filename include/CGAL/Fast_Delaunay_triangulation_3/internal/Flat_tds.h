@@ -28,6 +28,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Tetrahedra_replacement.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/Iterator_range.h>
@@ -378,16 +379,9 @@ private:
       for(Tet_id t : made) update_sub_determinants(m, t);
     anchor_->cells_made(made);
   }
-  void link(Tet_id t, int i, Facet_code other)
-  {
-    mesh().tets[t].n[i] = other;
-    mesh().neighbor_code(other) = facet_code(t, i);
-  }
-
   // c = (p, f...) with p in slot i, n its neighbour across facet i with
-  // opposite vertex q.  New cell C_k (k != i) is c with f_k replaced by q:
-  // its facet k is c's facet k, its facet i is n's facet opposite f_k, and
-  // its facet a (a != i, k) is shared with C_a's facet k.
+  // opposite vertex q.  New cell C_k (k != i) is c with f_k replaced by q,
+  // in c's, n's and a new slot, in that order.
   void flip_2_3(Tet_id c, int i)
   {
     Flat_storage& m = mesh();
@@ -397,34 +391,18 @@ private:
       std::swap(c, n);
       std::swap(i, in);
     }
-    const Tet_record old_c = m.tets[c], old_n = m.tets[n];
-    const Vertex_id q = old_n.v[in];
-    const std::size_t ghosts_before = std::size_t(m.is_ghost(c)) + std::size_t(m.is_ghost(n));
-    Tet_id slot[4];
-    int others[3], count = 0;
-    for(int k = 0; k < 4; ++k)
-      if(k != i) others[count++] = k;
-    slot[others[0]] = c;
-    slot[others[1]] = n;
-    slot[others[2]] = m.new_tet();
-    for(int k : others) {
-      Tet_record& r = m.tets[slot[k]];
-      for(int s = 0; s < 4; ++s) r.v[s] = old_c.v[s];
-      r.v[k] = q;
+    const Vertex_id q = m.vertex(n, in);
+    const Tet_id region[2] = {c, n};
+    std::array<Vertex_id, 4> made[3];
+    for(int k = 0, count = 0; k < 4; ++k) {
+      if(k == i) continue;
+      for(int s = 0; s < 4; ++s) made[count][s] = m.vertex(c, s);
+      made[count++][k] = q;
     }
-    for(int k : others) {
-      int kn = 0;
-      while(old_n.v[kn] != old_c.v[k]) ++kn;
-      link(slot[k], k, old_c.n[k]);
-      link(slot[k], i, old_n.n[kn]);
-      for(int a : others)
-        if(a != k) m.tets[slot[k]].n[a] = facet_code(slot[a], k);
-    }
-    ++m.live_tets;
-    std::size_t ghosts_after = 0;
-    for(int k : others) ghosts_after += m.is_ghost(slot[k]);
-    m.ghost_tets = m.ghost_tets + ghosts_after - ghosts_before;
-    flipped({slot[others[0]], slot[others[1]], slot[others[2]]});
+    Tet_id slots[3];
+    Replacement_scratch scratch;
+    replace_tetrahedra(m, region, 2, made, 3, slots, scratch);
+    flipped({slots[0], slots[1], slots[2]});
   }
 
   // The three cells around edge (a, b) = (v_i, v_j) of cells[0]; k and l are
@@ -472,45 +450,19 @@ private:
     return false;
   }
   // A = cells[0] with b replaced by z, B = cells[0] with a replaced by z
-  // (both keep its orientation); A and B share {x, y, z}.
+  // (both keep its orientation), in the slots of cells[0] and cells[1].
   void flip_3_2(const Ring& r)
   {
     Flat_storage& m = mesh();
-    const Tet_id c = r.cells[0], d1 = r.cells[1], d2 = r.cells[2];
-    const Tet_record old_c = m.tets[c], old_1 = m.tets[d1], old_2 = m.tets[d2];
-    const Vertex_id a = old_c.v[r.i], b = old_c.v[r.j];
-    const Vertex_id z = old_1.v[r.far[1]];
-    auto outer = [&](const Tet_record& t, Vertex_id opposite) {
-      int s = 0;
-      while(t.v[s] != opposite) ++s;
-      return t.n[s];
-    };
-    const std::size_t ghosts_before = std::size_t(m.is_ghost(c)) + m.is_ghost(d1) + m.is_ghost(d2);
-    const Tet_id A = c, B = d1;
-    const Facet_code c_opp_a = old_c.n[r.i], c_opp_b = old_c.n[r.j];
-    const Facet_code d1_opp_a = outer(old_1, a), d1_opp_b = outer(old_1, b); // across {b,x,z} and {a,x,z}
-    const Facet_code d2_opp_a = outer(old_2, a), d2_opp_b = outer(old_2, b); // across {b,y,z} and {a,y,z}
-    Tet_record& ra = m.tets[A];
-    Tet_record& rb = m.tets[B];
-    for(int s = 0; s < 4; ++s) ra.v[s] = rb.v[s] = old_c.v[s];
-    ra.v[r.j] = z;
-    rb.v[r.i] = z;
-    m.free_tet(d2);
-    --m.live_tets;
-    // A = {a@i, z@j, x@k, y@l}: facet i {z,x,y} is B's facet j; facet j
-    // {a,x,y} is c's outer facet opposite b; facet k {a,z,y} is cells[2]'s
-    // opposite b; facet l {a,z,x} is cells[1]'s opposite b.
-    ra.n[r.i] = facet_code(B, r.j);
-    rb.n[r.j] = facet_code(A, r.i);
-    link(A, r.j, c_opp_b);
-    link(A, r.k, d2_opp_b);
-    link(A, r.l, d1_opp_b);
-    link(B, r.i, c_opp_a);
-    link(B, r.k, d2_opp_a);
-    link(B, r.l, d1_opp_a);
-    const std::size_t ghosts_after = std::size_t(m.is_ghost(A)) + m.is_ghost(B);
-    m.ghost_tets = m.ghost_tets + ghosts_after - ghosts_before;
-    flipped({A, B});
+    const Vertex_id z = m.vertex(r.cells[1], r.far[1]);
+    std::array<Vertex_id, 4> made[2];
+    for(int s = 0; s < 4; ++s) made[0][s] = made[1][s] = m.vertex(r.cells[0], s);
+    made[0][r.j] = z;
+    made[1][r.i] = z;
+    Tet_id slots[2];
+    Replacement_scratch scratch;
+    replace_tetrahedra(m, r.cells, 3, made, 2, slots, scratch);
+    flipped({slots[0], slots[1]});
   }
 
   bool valid_3(std::string& why) const

@@ -1,14 +1,17 @@
 // Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Quality figures of a Tetrahedral_mesh (what the paper's Figure 12 and the
-// issue ask for): counts, extreme dihedral angles, a histogram of the
-// radius-edge ratio (circumradius / shortest edge; 0.612 for the regular
-// tetrahedron), edge lengths relative to the target size h, the number of
-// tetrahedra that are not positively oriented (exact test) and whether the
-// mesh boundary is exactly the input surface: the facets that separate two
-// subdomains or a subdomain from the outside, as a set, equal the input
-// triangles.
+// Quality figures of a Tetrahedral_mesh (what the paper's Figure 12 shows,
+// and what a finite-element user checks): counts; the shape measures of
+// Tetrahedron_quality.h as minimum, 1st percentile, mean and histogram
+// (gamma = 3 r_in / r_circ, and the smallest dihedral angle of each
+// tetrahedron), the extreme dihedral angles and the number of tetrahedra
+// under gamma 0.3 and under 10 degrees; a histogram of the radius-edge ratio
+// (circumradius / shortest edge; 0.612 for the regular tetrahedron); edge
+// lengths relative to the target size h; the number of tetrahedra that are
+// not positively oriented (exact test) and whether the mesh boundary is
+// exactly the input surface: the facets that separate two subdomains or a
+// subdomain from the outside, as a set, equal the input triangles.
 
 #ifndef CGAL_FDT3_INTERNAL_MESHER_QUALITY_REPORT_H
 #define CGAL_FDT3_INTERNAL_MESHER_QUALITY_REPORT_H
@@ -16,6 +19,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Refinement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedron_quality.h>
 
 #include <algorithm>
 #include <array>
@@ -32,6 +36,17 @@ struct Quality_report
   std::size_t vertices = 0, tetrahedra = 0, boundary_triangles = 0;
   std::vector<std::size_t> tetrahedra_per_subdomain; // index 0 unused
   double min_dihedral_degrees = 180, max_dihedral_degrees = 0;
+  // Of the smallest dihedral angle of each tetrahedron: 1st percentile, mean,
+  // and a histogram in bins of min_dihedral_bin_degrees from 0.
+  double min_dihedral_1st_percentile = 0, mean_min_dihedral = 0;
+  double min_dihedral_bin_degrees = 5;
+  std::vector<std::size_t> min_dihedral_histogram;
+  std::size_t tetrahedra_below_10_degrees = 0;
+  // gamma = 3 r_in / r_circ per tetrahedron; histogram bins [0, 0.1), ...
+  // [0.9, 1] (an inverted tetrahedron counts in the first).
+  double min_gamma = 1, gamma_1st_percentile = 0, mean_gamma = 0;
+  std::vector<std::size_t> gamma_histogram;
+  std::size_t tetrahedra_below_gamma_0_3 = 0;
   // Radius-edge ratio histogram: bins [0.6,0.7), [0.7,0.8), ... [2.0,inf).
   std::vector<double> radius_edge_bin_lower;
   std::vector<std::size_t> radius_edge_histogram;
@@ -49,28 +64,20 @@ struct Quality_report
 namespace Fast_Delaunay_triangulation_3_internal {
 namespace mesher {
 
-inline double dihedral_degrees(const double* a, const double* b, const double* c, const double* d)
+// The value below which a share p of `values` lies (nearest rank), and the
+// mean; `values` is reordered.
+inline double percentile(std::vector<double>& values, double p)
 {
-  // Angle at edge (a, b) between faces (a, b, c) and (a, b, d).
-  double e[3], u[3], v[3];
-  for(int i = 0; i < 3; ++i) {
-    e[i] = b[i] - a[i];
-    u[i] = c[i] - a[i];
-    v[i] = d[i] - a[i];
-  }
-  auto cross = [](const double* x, const double* y, double* z) {
-    z[0] = x[1] * y[2] - x[2] * y[1];
-    z[1] = x[2] * y[0] - x[0] * y[2];
-    z[2] = x[0] * y[1] - x[1] * y[0];
-  };
-  double n1[3], n2[3];
-  cross(e, u, n1);
-  cross(e, v, n2);
-  const double dot = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
-  const double l = std::sqrt((n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]) *
-                             (n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]));
-  if(!(l > 0)) return 0;
-  return std::acos(std::max(-1.0, std::min(1.0, dot / l))) * 180.0 / 3.14159265358979323846;
+  if(values.empty()) return 0;
+  const std::size_t k = std::min(values.size() - 1, static_cast<std::size_t>(p * values.size()));
+  std::nth_element(values.begin(), values.begin() + k, values.end());
+  return values[k];
+}
+inline double mean(const std::vector<double>& values)
+{
+  double sum = 0;
+  for(double x : values) sum += x;
+  return values.empty() ? 0 : sum / values.size();
 }
 
 inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh)
@@ -82,6 +89,11 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   q.tetrahedra_per_subdomain.assign(mesh.number_of_subdomains + 1, 0);
   for(double x = 0.6; x < 2.05; x += 0.1) q.radius_edge_bin_lower.push_back(std::round(x * 10) / 10);
   q.radius_edge_histogram.assign(q.radius_edge_bin_lower.size(), 0);
+  q.min_dihedral_histogram.assign(static_cast<std::size_t>(std::ceil(75 / q.min_dihedral_bin_degrees)), 0);
+  q.gamma_histogram.assign(10, 0);
+  std::vector<double> gammas, smallest_angles;
+  gammas.reserve(mesh.tetrahedra.size());
+  smallest_angles.reserve(mesh.tetrahedra.size());
 
   static const int edge_of[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   std::map<std::pair<std::uint32_t, std::uint32_t>, double> edges;
@@ -93,14 +105,19 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
     const int s = mesh.subdomain[t];
     if(s >= 1 && s <= mesh.number_of_subdomains) ++q.tetrahedra_per_subdomain[s];
     if(orientation(w[0], w[1], w[2], w[3]) <= 0) ++q.inverted_tetrahedra;
+    const Dihedral_range angles = dihedral_range(w);
+    q.min_dihedral_degrees = std::min(q.min_dihedral_degrees, angles.smallest);
+    q.max_dihedral_degrees = std::max(q.max_dihedral_degrees, angles.largest);
+    smallest_angles.push_back(angles.smallest);
+    q.tetrahedra_below_10_degrees += angles.smallest < 10 ? 1 : 0;
+    ++q.min_dihedral_histogram[std::min(q.min_dihedral_histogram.size() - 1,
+                                        static_cast<std::size_t>(angles.smallest / q.min_dihedral_bin_degrees))];
+    const double gamma = gamma_quality(w[0], w[1], w[2], w[3]);
+    gammas.push_back(gamma);
+    q.tetrahedra_below_gamma_0_3 += gamma < 0.3 ? 1 : 0;
+    ++q.gamma_histogram[static_cast<std::size_t>(std::min(9.0, std::max(0.0, gamma * 10)))];
     double shortest = std::numeric_limits<double>::infinity();
     for(const auto& e : edge_of) {
-      int others[2], k = 0;
-      for(int i = 0; i < 4; ++i)
-        if(i != e[0] && i != e[1]) others[k++] = i;
-      const double angle = dihedral_degrees(w[e[0]], w[e[1]], w[others[0]], w[others[1]]);
-      q.min_dihedral_degrees = std::min(q.min_dihedral_degrees, angle);
-      q.max_dihedral_degrees = std::max(q.max_dihedral_degrees, angle);
       const double l = distance(w[e[0]], w[e[1]]);
       shortest = std::min(shortest, l);
       const double h = (mesh.size[tv[e[0]]] + mesh.size[tv[e[1]]]) / 2;
@@ -122,6 +139,12 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
       facet_sides[key].push_back(s);
     }
   }
+
+  if(!gammas.empty()) q.min_gamma = *std::min_element(gammas.begin(), gammas.end());
+  q.mean_gamma = mean(gammas);
+  q.gamma_1st_percentile = percentile(gammas, 0.01);
+  q.mean_min_dihedral = mean(smallest_angles);
+  q.min_dihedral_1st_percentile = percentile(smallest_angles, 0.01);
 
   q.edges = edges.size();
   double sum = 0;
@@ -159,6 +182,16 @@ inline void print_quality_report(std::ostream& out, const CGAL::Fast_mesher_3::Q
   for(std::size_t s = 1; s < q.tetrahedra_per_subdomain.size(); ++s)
     out << "  subdomain " << s << ": " << q.tetrahedra_per_subdomain[s] << " tetrahedra\n";
   out << "dihedral angles: min " << q.min_dihedral_degrees << ", max " << q.max_dihedral_degrees << " degrees\n";
+  out << "smallest dihedral angle per tetrahedron: 1st percentile " << q.min_dihedral_1st_percentile << ", mean "
+      << q.mean_min_dihedral << " degrees; " << q.tetrahedra_below_10_degrees << " tetrahedra under 10 degrees\n";
+  for(std::size_t b = 0; b < q.min_dihedral_histogram.size(); ++b)
+    out << "  [" << b * q.min_dihedral_bin_degrees << ", " << (b + 1) * q.min_dihedral_bin_degrees << ") "
+        << q.min_dihedral_histogram[b] << "\n";
+  out << "gamma = 3 r_in / r_circ: min " << q.min_gamma << ", 1st percentile " << q.gamma_1st_percentile
+      << ", mean " << q.mean_gamma << "; " << q.tetrahedra_below_gamma_0_3 << " tetrahedra under 0.3\n";
+  for(std::size_t b = 0; b < q.gamma_histogram.size(); ++b)
+    out << "  [" << b / 10.0 << ", " << (b + 1) / 10.0 << (b + 1 == q.gamma_histogram.size() ? "] " : ") ")
+        << q.gamma_histogram[b] << "\n";
   out << "radius-edge ratio (max " << q.max_radius_edge << "):\n";
   for(std::size_t b = 0; b < q.radius_edge_histogram.size(); ++b) {
     out << "  ";

@@ -1,0 +1,176 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The one combinatorial update behind every flip on the flat arrays: a small
+// set of live tetrahedra (a region) is replaced by new tetrahedra that cover
+// the same region and have the same boundary facets.  A 2-3 flip is the
+// region of two tetrahedra sharing a facet, a 3-2 or 4-4 flip and Shewchuk's
+// edge removal the ring of tetrahedra around an edge, small polyhedron
+// reconnection any star-shaped cavity; the TDS view (Flat_tds.h) and the
+// mesh improvement (mesher/Mesh_improvement.h) both call this.
+//
+// What the caller guarantees: the new tetrahedra are combinatorially
+// positively oriented (the ghost vertex, if any, in slot 3), their facets
+// are either facets of the region's boundary (each used exactly once) or
+// shared by exactly two new tetrahedra.  What it gets: the old slots reused
+// in order, then slots from `new_slot()`; the surplus old slots handed to
+// `free_slot(t)`; every boundary facet linked both ways to the tetrahedron
+// outside, which is the only record outside the region that is written.
+// No predicate is evaluated: geometry is the caller's business.
+
+#ifndef CGAL_FDT3_INTERNAL_TETRAHEDRA_REPLACEMENT_H
+#define CGAL_FDT3_INTERNAL_TETRAHEDRA_REPLACEMENT_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// The facets of a region, each by its sorted vertex ids and where it is.
+struct Region_facet
+{
+  Vertex_id key[3];
+  Facet_code outside; // the facet's code as seen from the other side
+  bool used;
+};
+
+// Reused buffers: a replacement allocates nothing once they have grown.
+struct Replacement_scratch
+{
+  std::vector<Region_facet> boundary;
+  std::vector<Region_facet> open_inner; // new facets waiting for their twin
+};
+
+// Net change of the storage's counters, for callers that sum them per
+// partition instead of writing the shared counters.
+struct Replacement_counts
+{
+  std::ptrdiff_t live = 0, ghost = 0;
+};
+
+inline void sorted_facet_key(const Vertex_id* tv, int f, Vertex_id key[3])
+{
+  for(int i = 0; i < 3; ++i) key[i] = tv[facet_vertex[f][i]];
+  std::sort(key, key + 3);
+}
+
+inline bool in_region(const Tet_id* region, std::size_t n, Tet_id t)
+{
+  return std::find(region, region + n, t) != region + n;
+}
+
+// `slots` receives the slot of each made tetrahedron.  Throws logic_error,
+// before anything is written, when the made tetrahedra do not close up with
+// the region's boundary (a caller's bug: the arrays stay as they were).
+template <class New_slot, class Free_slot>
+void replace_tetrahedra(Flat_storage& m, const Tet_id* region, std::size_t region_size,
+                        const std::array<Vertex_id, 4>* made, std::size_t made_size, Tet_id* slots,
+                        Replacement_scratch& scratch, Replacement_counts& counts, New_slot new_slot,
+                        Free_slot free_slot)
+{
+  CGAL_precondition(region_size > 0 && made_size > 0);
+  std::vector<Region_facet>& boundary = scratch.boundary;
+  boundary.clear();
+  std::ptrdiff_t ghosts_before = 0;
+  for(std::size_t r = 0; r < region_size; ++r) {
+    const Tet_id t = region[r];
+    ghosts_before += m.is_ghost(t) ? 1 : 0;
+    for(int f = 0; f < 4; ++f) {
+      if(in_region(region, region_size, m.neighbor(t, f))) continue;
+      Region_facet b;
+      sorted_facet_key(m.vertex_ids(t), f, b.key);
+      b.outside = m.neighbor_code(t, f);
+      b.used = false;
+      boundary.push_back(b);
+    }
+  }
+  // The boundary check comes first, so that a bad call changes nothing.
+  const auto same = [](const Vertex_id* x, const Vertex_id* y) {
+    return x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
+  };
+  std::size_t boundary_facets_made = 0;
+  for(std::size_t k = 0; k < made_size; ++k)
+    for(int f = 0; f < 4; ++f) {
+      Vertex_id key[3];
+      sorted_facet_key(made[k].data(), f, key);
+      for(Region_facet& b : boundary)
+        if(!b.used && same(b.key, key)) {
+          b.used = true;
+          ++boundary_facets_made;
+          break;
+        }
+    }
+  if(boundary_facets_made != boundary.size() || (4 * made_size - boundary.size()) % 2 != 0)
+    throw std::logic_error("replace_tetrahedra: the new tetrahedra do not have the region's boundary");
+  for(Region_facet& b : boundary) b.used = false;
+
+  for(std::size_t k = 0; k < made_size; ++k) slots[k] = k < region_size ? region[k] : new_slot();
+  for(std::size_t r = made_size; r < region_size; ++r) free_slot(region[r]);
+
+  std::vector<Region_facet>& open = scratch.open_inner;
+  open.clear();
+  std::ptrdiff_t ghosts_after = 0;
+  for(std::size_t k = 0; k < made_size; ++k) {
+    Tet_record& record = m.tets[slots[k]];
+    for(int i = 0; i < 4; ++i) record.v[i] = made[k][i];
+    ghosts_after += made[k][3] == ghost_vertex ? 1 : 0;
+  }
+  for(std::size_t k = 0; k < made_size; ++k)
+    for(int f = 0; f < 4; ++f) {
+      Region_facet facet;
+      sorted_facet_key(made[k].data(), f, facet.key);
+      const Facet_code here = facet_code(slots[k], f);
+      bool linked = false;
+      for(Region_facet& b : boundary)
+        if(!b.used && same(b.key, facet.key)) {
+          b.used = true;
+          m.tets[slots[k]].n[f] = b.outside;
+          m.neighbor_code(b.outside) = here;
+          linked = true;
+          break;
+        }
+      if(linked) continue;
+      for(std::size_t j = 0; j < open.size(); ++j)
+        if(same(open[j].key, facet.key)) {
+          m.tets[slots[k]].n[f] = open[j].outside;
+          m.neighbor_code(open[j].outside) = here;
+          open[j] = open.back();
+          open.pop_back();
+          linked = true;
+          break;
+        }
+      if(!linked) {
+        facet.outside = here;
+        open.push_back(facet);
+      }
+    }
+  CGAL_postcondition(open.empty());
+  counts.live += std::ptrdiff_t(made_size) - std::ptrdiff_t(region_size);
+  counts.ghost += ghosts_after - ghosts_before;
+}
+
+// The same on the storage's own slot list and counters (sequential callers).
+inline void replace_tetrahedra(Flat_storage& m, const Tet_id* region, std::size_t region_size,
+                               const std::array<Vertex_id, 4>* made, std::size_t made_size, Tet_id* slots,
+                               Replacement_scratch& scratch)
+{
+  Replacement_counts counts;
+  replace_tetrahedra(m, region, region_size, made, made_size, slots, scratch, counts, [&m] { return m.new_tet(); },
+                     [&m](Tet_id t) { m.free_tet(t); });
+  m.live_tets = std::size_t(std::ptrdiff_t(m.live_tets) + counts.live);
+  m.ghost_tets = std::size_t(std::ptrdiff_t(m.ghost_tets) + counts.ghost);
+}
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_TETRAHEDRA_REPLACEMENT_H

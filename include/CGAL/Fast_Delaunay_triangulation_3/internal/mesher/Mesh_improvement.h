@@ -1,0 +1,781 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Mesh improvement: the step the paper leaves out (§4 and its conclusion:
+// "edge swap, edge collapse, edge split, vertex relocation and face swap ...
+// using the same parallel framework").  Every tetrahedron whose gamma
+// (Tetrahedron_quality.h) is under the threshold is worked on, worst first,
+// by local operations that each must raise the worst gamma of the region
+// they touch:
+//
+//   edge removal   the ring of n = 3..max_ring tetrahedra around one of its
+//                  edges is replaced by the 2n - 4 tetrahedra of the best
+//                  triangulation of the ring's polygon (Shewchuk's edge
+//                  removal; n = 3 is the 3-2 flip, n = 4 the 4-4 flip): the
+//                  polygon triangulation maximising the worst gamma, by
+//                  dynamic programming over its diagonals (Klincsek);
+//   face removal   the 2-3 flip of one of its facets;
+//   relocation     each of its vertices that is not on the surface moves
+//                  toward the weighted mean of the points that would make
+//                  each tetrahedron of its ball regular, or toward the
+//                  worst one's alone, or (only if it does better) toward the
+//                  mean of its neighbours, halving the step until the worst
+//                  gamma of the ball goes up.
+//
+// What every operation keeps: positive orientation, checked with the exact
+// predicate before anything is written; the input triangles (a constrained
+// facet is never crossed, a vertex on one never moves, so the boundary is
+// the same set of triangles); the subdomain of every tetrahedron (the
+// regions never span two).  Topological changes go through
+// replace_tetrahedra (Tetrahedra_replacement.h), the same code as the TDS
+// view's flips.
+//
+// In parallel the paper's framework is reused: vertices get the partition
+// of their Moore key's range (the ranges cut the bad tetrahedra into equal
+// shares); a partition works only on tetrahedra whose four vertices are
+// its own, so two partitions never read or write the same tetrahedron or
+// vertex; an operation that would reach another one's is left for the next
+// attempt, whose cuts are shifted by half a partition, and what is left
+// after that is done sequentially.  Each partition takes slots from its own
+// free list and its own range of fresh slots, so the mesh depends on the
+// number of partitions, never on the threads' timing.
+
+#ifndef CGAL_FDT3_INTERNAL_MESHER_MESH_IMPROVEMENT_H
+#define CGAL_FDT3_INTERNAL_MESHER_MESH_IMPROVEMENT_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Moore_curve.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Radix_sort.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Tetrahedra_replacement.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Constrained_mesh.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedron_quality.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+namespace mesher {
+
+struct Improvement_options
+{
+  double quality_threshold = 0.3; // gamma under which a tetrahedron is worked on
+  int max_passes = 10;            // sweeps over the bad tetrahedra
+  int threads = 1;                // partitions; the result depends on this number only
+  std::size_t min_bad_per_partition = 256;
+  int max_ring = 8;               // largest edge ring that edge removal retriangulates
+};
+
+struct Improvement_statistics
+{
+  std::size_t bad_before = 0, bad_after = 0; // tetrahedra under the threshold
+  double min_gamma_before = 1, min_gamma_after = 1; // over the volumes' tetrahedra
+  double min_dihedral_before = 180, min_dihedral_after = 180; // degrees, over the volumes
+  std::size_t below_10_degrees_before = 0, below_10_degrees_after = 0;
+  // Of the bad tetrahedra left, those whose four vertices are on the
+  // surface: relocation cannot touch them and only a Steiner point could.
+  std::size_t bad_after_on_surface = 0;
+  std::size_t edge_removals = 0, face_removals = 0, relocations = 0;
+  std::size_t deferred = 0; // operations that met another partition and were retried
+  std::size_t operations_in_partitions = 0; // of the operations, those done in attempts with several partitions
+  int passes = 0;
+  double seconds = 0;
+
+  void add(const Improvement_statistics& o)
+  {
+    edge_removals += o.edge_removals;
+    face_removals += o.face_removals;
+    relocations += o.relocations;
+    deferred += o.deferred;
+  }
+};
+
+class Mesh_improvement
+{
+public:
+  Mesh_improvement(Constrained_mesh& cm, const Improvement_options& options) : cm_(cm), options_(options)
+  {
+    options_.max_ring = std::max(3, std::min(options_.max_ring, max_ring_limit));
+  }
+
+  Improvement_statistics run()
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    Improvement_statistics stats;
+    cm_.fit_slot_arrays();
+    mark_surface_vertices();
+    set_incident_tetrahedra();
+    partition_of_vertex_.assign(cm_.mesh.vertices.size(), 0);
+    std::vector<Bad_tet> bad = bad_tetrahedra(stats.min_gamma_before);
+    stats.bad_before = bad.size();
+    dihedral_figures(stats.min_dihedral_before, stats.below_10_degrees_before);
+    for(int pass = 0; pass < options_.max_passes && !bad.empty(); ++pass) {
+      ++stats.passes;
+      const std::size_t changes = stats.edge_removals + stats.face_removals + stats.relocations;
+      improve(bad, stats);
+      bad = bad_tetrahedra(stats.min_gamma_after);
+      if(stats.edge_removals + stats.face_removals + stats.relocations == changes) break;
+    }
+    if(stats.passes == 0) stats.min_gamma_after = stats.min_gamma_before;
+    stats.bad_after = bad.size();
+    dihedral_figures(stats.min_dihedral_after, stats.below_10_degrees_after);
+    for(const Bad_tet& b : bad) {
+      const Vertex_id* tv = cm_.mesh.vertex_ids(b.t);
+      stats.bad_after_on_surface +=
+          on_surface_[tv[0]] && on_surface_[tv[1]] && on_surface_[tv[2]] && on_surface_[tv[3]] ? 1 : 0;
+    }
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return stats;
+  }
+
+private:
+  static constexpr int max_ring_limit = 10;
+  static constexpr std::size_t max_ball = 256;
+
+  struct Bad_tet
+  {
+    double gamma;
+    Tet_id t;
+    friend bool operator<(const Bad_tet& x, const Bad_tet& y)
+    {
+      return x.gamma != y.gamma ? x.gamma < y.gamma : x.t < y.t;
+    }
+  };
+
+  // One partition's state during an attempt.
+  struct Worker
+  {
+    std::uint8_t partition = 0;
+    std::vector<Tet_id>* free_slots = nullptr;
+    Tet_id next_fresh = 0, fresh_end = 0;
+    Replacement_scratch replacement;
+    Replacement_counts counts;
+    Improvement_statistics stats;
+    std::vector<Tet_id> deferred;
+    std::vector<Tet_id> ball;
+    std::vector<std::array<Vertex_id, 4>> made;
+    std::vector<Tet_id> slots;
+
+    std::size_t slots_left() const { return free_slots->size() + (fresh_end - next_fresh); }
+    Tet_id new_slot()
+    {
+      if(!free_slots->empty()) {
+        const Tet_id t = free_slots->back();
+        free_slots->pop_back();
+        return t;
+      }
+      CGAL_assertion(next_fresh < fresh_end);
+      return next_fresh++;
+    }
+  };
+
+  // What an operation did (improved), or what a search found (found): or
+  // nothing worth doing, or another partition's tetrahedra in the way (the
+  // bad tetrahedron is retried in the next attempt).
+  enum class Outcome { improved, found, unchanged, foreign };
+
+  // ------------------------------------------------------------ set-up
+  void mark_surface_vertices()
+  {
+    const Flat_storage& m = cm_.mesh;
+    on_surface_.assign(m.vertices.size(), 0);
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+      if(!m.is_live(t)) continue;
+      const Vertex_id* tv = m.vertex_ids(t);
+      if(m.is_ghost(t) || cm_.subdomain[t] <= 0) {
+        for(int i = 0; i < 4; ++i)
+          if(tv[i] != ghost_vertex) on_surface_[tv[i]] = 1;
+        continue;
+      }
+      for(int f = 0; f < 4; ++f)
+        if(cm_.is_constrained(t, f))
+          for(int i = 0; i < 3; ++i) on_surface_[tv[facet_vertex[f][i]]] = 1;
+    }
+  }
+
+  void set_incident_tetrahedra()
+  {
+    const Flat_storage& m = cm_.mesh;
+    incident_.assign(m.vertices.size(), no_tet);
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t)
+      if(is_volume(t))
+        for(int i = 0; i < 4; ++i) incident_[m.vertex(t, i)] = t;
+  }
+
+  bool is_volume(Tet_id t) const
+  {
+    return cm_.mesh.is_live(t) && !cm_.mesh.is_ghost(t) && cm_.subdomain[t] > 0;
+  }
+
+  double gamma_of(const Vertex_id* tv) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    return gamma_quality(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]));
+  }
+  double gamma_of(Tet_id t) const { return gamma_of(cm_.mesh.vertex_ids(t)); }
+
+  // The tetrahedra under the threshold, in slot order; `smallest` gets the
+  // lowest gamma of all the volumes' tetrahedra.
+  std::vector<Bad_tet> bad_tetrahedra(double& smallest) const
+  {
+    const std::size_t slots = cm_.mesh.number_of_slots();
+    const int chunks = chunk_count(slots, std::max(1, options_.threads));
+    std::vector<std::vector<Bad_tet>> found(chunks);
+    std::vector<double> lowest(chunks, 1.0);
+    for_each_chunk(chunks, [&](int c) {
+      const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
+      for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
+        if(!is_volume(t)) continue;
+        const double g = gamma_of(t);
+        lowest[c] = std::min(lowest[c], g);
+        if(g < options_.quality_threshold) found[c].push_back({g, t});
+      }
+    });
+    std::vector<Bad_tet> bad;
+    for(const auto& run : found) bad.insert(bad.end(), run.begin(), run.end());
+    smallest = *std::min_element(lowest.begin(), lowest.end());
+    return bad;
+  }
+
+  void dihedral_figures(double& smallest, std::size_t& below_10_degrees) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    smallest = 180;
+    below_10_degrees = 0;
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+      if(!is_volume(t)) continue;
+      const Vertex_id* tv = m.vertex_ids(t);
+      const double* w[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
+      const double angle = dihedral_range(w).smallest;
+      smallest = std::min(smallest, angle);
+      below_10_degrees += angle < 10 ? 1 : 0;
+    }
+  }
+
+  // ------------------------------------------------------------ partitions
+  void improve(const std::vector<Bad_tet>& bad, Improvement_statistics& stats)
+  {
+    std::vector<Tet_id> todo(bad.size());
+    for(std::size_t i = 0; i < bad.size(); ++i) todo[i] = bad[i].t;
+    const int partitions = static_cast<int>(std::min<std::size_t>(
+        std::max(1, std::min(options_.threads, 255)), std::max<std::size_t>(1, bad.size() / options_.min_bad_per_partition)));
+    if(partitions > 1) {
+      const std::vector<std::uint64_t> keys = vertex_keys();
+      for(int attempt = 0; attempt < 2 && !todo.empty(); ++attempt)
+        todo = attempt_in_partitions(todo, partitions, keys, attempt == 0 ? 0.0 : 0.5, stats);
+    }
+    std::fill(partition_of_vertex_.begin(), partition_of_vertex_.end(), std::uint8_t(0));
+    std::vector<std::vector<Tet_id>> lists(1, todo);
+    run_workers(lists, stats);
+  }
+
+  std::vector<std::uint64_t> vertex_keys() const
+  {
+    const Flat_storage& m = cm_.mesh;
+    const Moore_grid grid(cm_.box_lo, cm_.box_hi, moore_bits_per_axis(m.vertices.size()));
+    const Moore_curve curve(grid.bits_per_axis());
+    std::vector<std::uint64_t> keys(m.vertices.size());
+    for(Vertex_id v = 0; v < m.vertices.size(); ++v) keys[v] = grid.key(curve, m.point(v));
+    return keys;
+  }
+
+  // Cuts at the keys of the bad tetrahedra's first vertices, at shares
+  // (j + shift) / partitions; a key before the first cut goes with the last
+  // partition (the Moore curve is closed).  Returns what must be retried.
+  // A deferred slot may have been freed or reused since: only the live
+  // volume tetrahedra among `listed` are tried again.
+  std::vector<Tet_id> attempt_in_partitions(const std::vector<Tet_id>& listed, int partitions,
+                                            const std::vector<std::uint64_t>& keys, double shift,
+                                            Improvement_statistics& stats)
+  {
+    const Flat_storage& m = cm_.mesh;
+    std::vector<Tet_id> todo;
+    for(Tet_id t : listed)
+      if(is_volume(t)) todo.push_back(t);
+    if(todo.empty()) return todo;
+    std::vector<std::uint64_t> sorted(todo.size());
+    for(std::size_t i = 0; i < todo.size(); ++i) sorted[i] = keys[m.vertex(todo[i], 0)];
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<std::uint64_t> cuts(partitions);
+    for(int j = 0; j < partitions; ++j)
+      cuts[j] = sorted[std::min(sorted.size() - 1, static_cast<std::size_t>((j + shift) * sorted.size() / partitions))];
+    for(Vertex_id v = 0; v < m.vertices.size(); ++v) {
+      const int above = static_cast<int>(std::upper_bound(cuts.begin(), cuts.end(), keys[v]) - cuts.begin());
+      partition_of_vertex_[v] = static_cast<std::uint8_t>(above == 0 ? partitions - 1 : above - 1);
+    }
+    std::vector<std::vector<Tet_id>> lists(partitions);
+    std::vector<Tet_id> left;
+    for(Tet_id t : todo) {
+      const std::uint8_t p = partition_of_vertex_[m.vertex(t, 0)];
+      (owned_by(t, p) ? lists[p] : left).push_back(t);
+    }
+    std::vector<Tet_id> retry = run_workers(lists, stats);
+    left.insert(left.end(), retry.begin(), retry.end());
+    std::sort(left.begin(), left.end());
+    left.erase(std::unique(left.begin(), left.end()), left.end());
+    return left;
+  }
+
+  // Room for every worker's worst case is fixed before they start: an
+  // operation on a bad tetrahedron adds at most max_ring - 4 tetrahedra,
+  // and each bad tetrahedron gets at most one topological operation.
+  std::vector<Tet_id> run_workers(std::vector<std::vector<Tet_id>>& lists, Improvement_statistics& stats)
+  {
+    Flat_storage& m = cm_.mesh;
+    const int partitions = static_cast<int>(lists.size());
+    std::vector<Tet_id> fresh_begin(partitions + 1);
+    fresh_begin[0] = static_cast<Tet_id>(m.number_of_slots());
+    for(int j = 0; j < partitions; ++j)
+      fresh_begin[j + 1] = fresh_begin[j] + static_cast<Tet_id>(std::max(1, options_.max_ring - 4) * lists[j].size() + 64);
+    m.resize_tets(fresh_begin[partitions], Flat_storage::New_slots::left_unwritten);
+    cm_.fit_slot_arrays();
+    std::vector<std::vector<Tet_id>> free_lists(partitions);
+    for(std::size_t k = 0; k < m.free_tets.size(); ++k) free_lists[k % partitions].push_back(m.free_tets[k]);
+    m.free_tets.clear();
+    std::vector<Worker> workers(partitions);
+    for_each_chunk(partitions, [&](int j) {
+      Worker& w = workers[j];
+      w.partition = static_cast<std::uint8_t>(j);
+      w.free_slots = &free_lists[j];
+      w.next_fresh = fresh_begin[j];
+      w.fresh_end = fresh_begin[j + 1];
+      std::vector<Bad_tet> order;
+      for(Tet_id t : lists[j])
+        if(is_volume(t)) order.push_back({gamma_of(t), t});
+      std::sort(order.begin(), order.end());
+      for(const Bad_tet& b : order) improve_tetrahedron(w, b.t);
+    });
+    std::vector<Tet_id> retry;
+    for(int j = 0; j < partitions; ++j) {
+      Worker& w = workers[j];
+      m.live_tets = std::size_t(std::ptrdiff_t(m.live_tets) + w.counts.live);
+      m.ghost_tets = std::size_t(std::ptrdiff_t(m.ghost_tets) + w.counts.ghost);
+      stats.add(w.stats);
+      if(partitions > 1)
+        stats.operations_in_partitions += w.stats.edge_removals + w.stats.face_removals + w.stats.relocations;
+      if(j + 1 < partitions)
+        for(Tet_id t = w.next_fresh; t < fresh_begin[j + 1]; ++t) {
+          m.tets[t].v[0] = mark_bit;
+          m.free_tets.push_back(t);
+        }
+      m.free_tets.insert(m.free_tets.end(), free_lists[j].begin(), free_lists[j].end());
+      retry.insert(retry.end(), w.deferred.begin(), w.deferred.end());
+    }
+    m.resize_tets(workers[partitions - 1].next_fresh, Flat_storage::New_slots::left_unwritten);
+    cm_.fit_slot_arrays();
+    return retry;
+  }
+
+  bool owned_by(Tet_id t, std::uint8_t p) const
+  {
+    if(!is_volume(t)) return false;
+    const Vertex_id* tv = cm_.mesh.vertex_ids(t);
+    return partition_of_vertex_[tv[0]] == p && partition_of_vertex_[tv[1]] == p &&
+           partition_of_vertex_[tv[2]] == p && partition_of_vertex_[tv[3]] == p;
+  }
+  bool own_vertex(Vertex_id v, std::uint8_t p) const { return v != ghost_vertex && partition_of_vertex_[v] == p; }
+
+  // ------------------------------------------------------------ one bad tetrahedron
+  void improve_tetrahedron(Worker& w, Tet_id t)
+  {
+    if(!is_volume(t) || gamma_of(t) >= options_.quality_threshold) return;
+    if(!owned_by(t, w.partition)) {
+      w.deferred.push_back(t);
+      ++w.stats.deferred;
+      return;
+    }
+    bool foreign = false;
+    Outcome o = remove_best_edge(w, t);
+    if(o == Outcome::improved) return;
+    foreign |= o == Outcome::foreign;
+    o = remove_best_facet(w, t);
+    if(o == Outcome::improved) return;
+    foreign |= o == Outcome::foreign;
+    Vertex_id corners[4];
+    std::copy(cm_.mesh.vertex_ids(t), cm_.mesh.vertex_ids(t) + 4, corners);
+    for(Vertex_id v : corners) {
+      if(on_surface_[v]) continue;
+      o = relocate(w, v);
+      foreign |= o == Outcome::foreign;
+      if(!is_volume(t) || gamma_of(t) >= options_.quality_threshold) return;
+    }
+    if(foreign) {
+      w.deferred.push_back(t);
+      ++w.stats.deferred;
+    }
+  }
+
+  // After a replacement: the region's subdomain, constrained bits copied
+  // from the tetrahedra outside, incidences.
+  void after_replacement(const Worker& w, std::size_t made, int subdomain)
+  {
+    Flat_storage& m = cm_.mesh;
+    for(std::size_t k = 0; k < made; ++k) {
+      const Tet_id s = w.slots[k];
+      cm_.subdomain[s] = subdomain;
+      std::uint8_t bits = 0;
+      for(int f = 0; f < 4; ++f) {
+        const Facet_code back = m.neighbor_code(s, f);
+        const Tet_id u = tet_of(back);
+        if(std::find(w.slots.begin(), w.slots.begin() + made, u) == w.slots.begin() + made &&
+           cm_.is_constrained(u, facet_of(back)))
+          bits |= std::uint8_t(1u << f);
+      }
+      cm_.constrained[s] = bits;
+      for(int i = 0; i < 4; ++i) incident_[m.vertex(s, i)] = s;
+    }
+  }
+
+  bool all_positive(const std::vector<std::array<Vertex_id, 4>>& tets) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    for(const auto& tv : tets)
+      if(orientation(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])) <= 0) return false;
+    return true;
+  }
+
+  void replace(Worker& w, const Tet_id* region, std::size_t region_size, int subdomain)
+  {
+    w.slots.resize(w.made.size());
+    replace_tetrahedra(cm_.mesh, region, region_size, w.made.data(), w.made.size(), w.slots.data(), w.replacement,
+                       w.counts, [&w] { return w.new_slot(); }, [&](Tet_id s) {
+                         cm_.mesh.mark_free(s);
+                         w.free_slots->push_back(s);
+                       });
+    after_replacement(w, w.made.size(), subdomain);
+  }
+
+  // ------------------------------------------------------------ edge removal
+  struct Edge_ring
+  {
+    Vertex_id a, b;
+    int n = 0;
+    Vertex_id ring[max_ring_limit];
+    Tet_id tets[max_ring_limit]; // tets[i] = (a, b, ring[i], ring[i + 1]), positively
+    double worst = 1;
+  };
+
+  static bool even_permutation(const int p[4])
+  {
+    int inversions = 0;
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) inversions += p[i] > p[j] ? 1 : 0;
+    return inversions % 2 == 0;
+  }
+
+  // The ring around edge (slot i, slot j) of t, walked across the facets that
+  // hold the edge, each of which must be unconstrained with both sides in
+  // t's subdomain and in w's partition.
+  Outcome edge_ring(const Worker& w, Tet_id t, int i, int j, Edge_ring& r) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    const Vertex_id* tv = m.vertex_ids(t);
+    int k = -1, l = -1;
+    for(int s = 0; s < 4; ++s)
+      if(s != i && s != j) (k < 0 ? k : l) = s;
+    const int order[4] = {i, j, k, l};
+    if(!even_permutation(order)) std::swap(k, l);
+    r.a = tv[i];
+    r.b = tv[j];
+    r.n = 0;
+    Tet_id cur = t;
+    Vertex_id x = tv[k];
+    for(;;) {
+      if(r.n == options_.max_ring) return Outcome::unchanged;
+      if(!is_volume(cur) || cm_.subdomain[cur] != cm_.subdomain[t]) return Outcome::unchanged;
+      const Vertex_id* cv = m.vertex_ids(cur);
+      int sx = -1;
+      Vertex_id y = no_vertex;
+      for(int s = 0; s < 4; ++s) {
+        if(cv[s] == x) sx = s;
+        else if(cv[s] != r.a && cv[s] != r.b) y = cv[s];
+      }
+      if(sx < 0 || y == no_vertex) return Outcome::unchanged;
+      if(!own_vertex(y, w.partition) || !own_vertex(x, w.partition)) return Outcome::foreign;
+      r.ring[r.n] = x;
+      r.tets[r.n] = cur;
+      ++r.n;
+      if(cm_.is_constrained(cur, sx)) return Outcome::unchanged;
+      cur = m.neighbor(cur, sx);
+      x = y;
+      if(cur == t) break;
+    }
+    if(r.n < 3 || x != r.ring[0]) return Outcome::unchanged;
+    r.worst = 1;
+    for(int s = 0; s < r.n; ++s) r.worst = std::min(r.worst, gamma_of(r.tets[s]));
+    return Outcome::found;
+  }
+
+  // Klincsek's dynamic programme over the ring polygon: best[i][j] is the
+  // largest worst gamma of a triangulation of ring[i..j], each triangle
+  // (i, m, j) standing for the tetrahedra (a, i, m, j) and (i, m, j, b).
+  double best_ring_triangulation(const Edge_ring& r, int split[max_ring_limit][max_ring_limit]) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    double best[max_ring_limit][max_ring_limit];
+    const double* pa = m.point(r.a);
+    const double* pb = m.point(r.b);
+    for(int len = 1; len < r.n; ++len)
+      for(int i = 0; i + len < r.n; ++i) {
+        const int j = i + len;
+        if(len == 1) {
+          best[i][j] = std::numeric_limits<double>::infinity();
+          continue;
+        }
+        best[i][j] = -std::numeric_limits<double>::infinity();
+        for(int mid = i + 1; mid < j; ++mid) {
+          const double sub = std::min(best[i][mid], best[mid][j]);
+          if(sub <= best[i][j]) continue;
+          const double* pi = m.point(r.ring[i]);
+          const double* pm = m.point(r.ring[mid]);
+          const double* pj = m.point(r.ring[j]);
+          const double q = std::min({sub, gamma_quality(pa, pi, pm, pj), gamma_quality(pi, pm, pj, pb)});
+          if(q > best[i][j]) {
+            best[i][j] = q;
+            split[i][j] = mid;
+          }
+        }
+      }
+    return best[0][r.n - 1];
+  }
+
+  void ring_tetrahedra(const Edge_ring& r, const int split[max_ring_limit][max_ring_limit], int i, int j,
+                       std::vector<std::array<Vertex_id, 4>>& out) const
+  {
+    if(j - i < 2) return;
+    const int mid = split[i][j];
+    out.push_back({r.a, r.ring[i], r.ring[mid], r.ring[j]});
+    out.push_back({r.ring[i], r.ring[mid], r.ring[j], r.b});
+    ring_tetrahedra(r, split, i, mid, out);
+    ring_tetrahedra(r, split, mid, j, out);
+  }
+
+  Outcome remove_best_edge(Worker& w, Tet_id t)
+  {
+    static const int edges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    bool foreign = false;
+    Edge_ring best_ring, r;
+    double best_gain = 0, best_quality = 0;
+    int best_split[max_ring_limit][max_ring_limit], split[max_ring_limit][max_ring_limit];
+    for(const auto& e : edges) {
+      const Outcome o = edge_ring(w, t, e[0], e[1], r);
+      if(o == Outcome::foreign) foreign = true;
+      if(o != Outcome::found) continue;
+      const double q = best_ring_triangulation(r, split);
+      if(q - r.worst > best_gain) {
+        best_gain = q - r.worst;
+        best_quality = q;
+        best_ring = r;
+        std::copy(&split[0][0], &split[0][0] + max_ring_limit * max_ring_limit, &best_split[0][0]);
+      }
+    }
+    if(best_gain <= 0 || best_quality <= 0) return foreign ? Outcome::foreign : Outcome::unchanged;
+    w.made.clear();
+    ring_tetrahedra(best_ring, best_split, 0, best_ring.n - 1, w.made);
+    if(!all_positive(w.made) || w.slots_left() < w.made.size()) return Outcome::unchanged;
+    replace(w, best_ring.tets, best_ring.n, cm_.subdomain[t]);
+    ++w.stats.edge_removals;
+    return Outcome::improved;
+  }
+
+  // ------------------------------------------------------------ face removal (2-3)
+  Outcome remove_best_facet(Worker& w, Tet_id t)
+  {
+    const Flat_storage& m = cm_.mesh;
+    bool foreign = false;
+    int best_facet = -1;
+    double best_quality = 0;
+    std::array<Vertex_id, 4> best_made[3];
+    const Vertex_id* tv = m.vertex_ids(t);
+    for(int i = 0; i < 4; ++i) {
+      if(cm_.is_constrained(t, i)) continue;
+      const Tet_id u = m.neighbor(t, i);
+      if(!is_volume(u) || cm_.subdomain[u] != cm_.subdomain[t]) continue;
+      const Vertex_id q = m.vertex(u, facet_of(m.neighbor_code(t, i)));
+      if(!own_vertex(q, w.partition)) {
+        foreign = true;
+        continue;
+      }
+      const double worst = std::min(gamma_of(t), gamma_of(u));
+      std::array<Vertex_id, 4> made[3];
+      double quality = 1;
+      for(int k = 0, c = 0; k < 4; ++k) {
+        if(k == i) continue;
+        for(int s = 0; s < 4; ++s) made[c][s] = tv[s];
+        made[c][k] = q;
+        quality = std::min(quality, gamma_of(made[c].data()));
+        ++c;
+      }
+      if(quality > worst && quality > best_quality) {
+        best_facet = i;
+        best_quality = quality;
+        std::copy(made, made + 3, best_made);
+      }
+    }
+    if(best_facet < 0) return foreign ? Outcome::foreign : Outcome::unchanged;
+    w.made.assign(best_made, best_made + 3);
+    if(!all_positive(w.made) || w.slots_left() < 1) return Outcome::unchanged;
+    const Tet_id region[2] = {t, m.neighbor(t, best_facet)};
+    replace(w, region, 2, cm_.subdomain[t]);
+    ++w.stats.face_removals;
+    return Outcome::improved;
+  }
+
+  // ------------------------------------------------------------ relocation
+  // The tetrahedra around v, all of them its partition's, in w.ball.
+  Outcome collect_ball(Worker& w, Vertex_id v) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    w.ball.clear();
+    const Tet_id start = incident_[v];
+    if(start == no_tet || !is_volume(start)) return Outcome::unchanged;
+    w.ball.push_back(start);
+    for(std::size_t k = 0; k < w.ball.size(); ++k) {
+      const Tet_id t = w.ball[k];
+      if(!owned_by(t, w.partition)) return Outcome::foreign;
+      const Vertex_id* tv = m.vertex_ids(t);
+      for(int f = 0; f < 4; ++f) {
+        if(tv[f] == v) continue; // the facet opposite v does not hold it
+        const Tet_id u = m.neighbor(t, f);
+        if(std::find(w.ball.begin(), w.ball.end(), u) != w.ball.end()) continue;
+        if(w.ball.size() == max_ball) return Outcome::unchanged;
+        w.ball.push_back(u);
+      }
+    }
+    return Outcome::found;
+  }
+
+  // The worst gamma of the ball with v at p (v's record is not changed).
+  double ball_quality(const Worker& w, Vertex_id v, const double* p) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    double worst = 1;
+    for(Tet_id t : w.ball) {
+      const double* c[4];
+      for(int i = 0; i < 4; ++i) c[i] = m.vertex(t, i) == v ? p : m.point(m.vertex(t, i));
+      worst = std::min(worst, gamma_quality(c[0], c[1], c[2], c[3]));
+      if(worst <= 0) return worst;
+    }
+    return worst;
+  }
+
+  bool ball_positive(const Worker& w, Vertex_id v, const double* p) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    for(Tet_id t : w.ball) {
+      const double* c[4];
+      for(int i = 0; i < 4; ++i) c[i] = m.vertex(t, i) == v ? p : m.point(m.vertex(t, i));
+      if(orientation(c[0], c[1], c[2], c[3]) <= 0) return false;
+    }
+    return true;
+  }
+
+  // Where v would make tetrahedron t regular on its opposite facet: above
+  // the facet's centroid, at the height of the regular tetrahedron with the
+  // facet's mean edge, on the side positive orientation asks for.
+  void regular_apex(Tet_id t, Vertex_id v, double* out) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    int s = 0;
+    while(m.vertex(t, s) != v) ++s;
+    // (v, facet_vertex[s]...) is an even permutation of the slots, so positive.
+    const double* x = m.point(m.vertex(t, facet_vertex[s][0]));
+    const double* y = m.point(m.vertex(t, facet_vertex[s][1]));
+    const double* z = m.point(m.vertex(t, facet_vertex[s][2]));
+    double e1[3], e2[3], n[3];
+    for(int a = 0; a < 3; ++a) {
+      e1[a] = y[a] - x[a];
+      e2[a] = z[a] - x[a];
+    }
+    quality_detail::cross(e1, e2, n);
+    const double nn = quality_detail::norm(n);
+    const double edge = (distance(x, y) + distance(y, z) + distance(z, x)) / 3;
+    // orientation(v, x, y, z) > 0 means (v - x) . n < 0.
+    const double height = nn > 0 ? -std::sqrt(2.0 / 3.0) * edge / nn : 0;
+    for(int a = 0; a < 3; ++a) out[a] = (x[a] + y[a] + z[a]) / 3 + height * n[a];
+  }
+
+  static double distance(const double* p, const double* q)
+  {
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+
+  Outcome relocate(Worker& w, Vertex_id v)
+  {
+    const Outcome ball = collect_ball(w, v);
+    if(ball != Outcome::found) return ball;
+    Flat_storage& m = cm_.mesh;
+    const double* here = m.point(v);
+    const double worst = ball_quality(w, v, here);
+    // Targets: the weighted mean of the regular apexes (weight 1 / gamma,
+    // so the bad tetrahedra pull hardest), the worst tetrahedron's apex,
+    // and the neighbours' mean (Laplacian), tried in that order.
+    double targets[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    double weight_sum = 0, worst_gamma = 2;
+    std::size_t neighbours = 0;
+    for(Tet_id t : w.ball) {
+      double apex[3];
+      regular_apex(t, v, apex);
+      const double g = gamma_of(t);
+      const double weight = 1 / std::max(g, 1e-3);
+      for(int a = 0; a < 3; ++a) targets[0][a] += weight * apex[a];
+      weight_sum += weight;
+      if(g < worst_gamma) {
+        worst_gamma = g;
+        std::copy(apex, apex + 3, targets[1]);
+      }
+      for(int i = 0; i < 4; ++i)
+        if(m.vertex(t, i) != v) {
+          for(int a = 0; a < 3; ++a) targets[2][a] += m.point(m.vertex(t, i))[a];
+          ++neighbours;
+        }
+    }
+    for(int a = 0; a < 3; ++a) {
+      targets[0][a] /= weight_sum;
+      targets[2][a] /= double(neighbours);
+    }
+    double best[3] = {here[0], here[1], here[2]};
+    double best_quality = worst;
+    for(const auto& target : targets) {
+      for(double step = 1; step >= 1.0 / 16; step /= 2) {
+        double p[3];
+        for(int a = 0; a < 3; ++a) p[a] = here[a] + step * (target[a] - here[a]);
+        const double q = ball_quality(w, v, p);
+        if(q > best_quality) {
+          best_quality = q;
+          std::copy(p, p + 3, best);
+          break;
+        }
+      }
+    }
+    if(!(best_quality > worst) || !ball_positive(w, v, best)) return Outcome::unchanged;
+    std::copy(best, best + 3, m.vertices[v].xyz);
+    ++w.stats.relocations;
+    return Outcome::improved;
+  }
+
+  Constrained_mesh& cm_;
+  Improvement_options options_;
+  std::vector<std::uint8_t> on_surface_;
+  std::vector<Tet_id> incident_;
+  std::vector<std::uint8_t> partition_of_vertex_;
+  static constexpr Tet_id no_tet = ~Tet_id(0);
+};
+
+// Improves the volumes of `cm` in place (its input triangles and subdomains
+// kept); the statistics say what was done and what is left.
+inline Improvement_statistics improve_mesh(Constrained_mesh& cm, const Improvement_options& options)
+{
+  return Mesh_improvement(cm, options).run();
+}
+
+} // namespace mesher
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_MESHER_MESH_IMPROVEMENT_H

@@ -1,0 +1,106 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Shape measures of one tetrahedron, shared by the quality report and the
+// mesh improvement so that what is optimised is what is reported.
+//
+//   gamma = 3 r_in / r_circ  (1 for the regular tetrahedron, 0 for a flat
+//   one, negative for an inverted one).  With u, v, w the edges from a,
+//   D = u . (v x w) = 6 V, A the total facet area and
+//   N = |u|^2 (v x w) + |v|^2 (w x u) + |w|^2 (u x v), the circumcentre is
+//   a + N / (2 D) and r_in = 3 V / A, so gamma = 3 D |D| / (A |N|): no
+//   square root but the areas', no division by a vanishing D.
+//
+//   dihedral angles at the six edges, in degrees (70.53 for the regular
+//   tetrahedron); a sliver has some near 0 and some near 180.
+
+#ifndef CGAL_FDT3_INTERNAL_MESHER_TETRAHEDRON_QUALITY_H
+#define CGAL_FDT3_INTERNAL_MESHER_TETRAHEDRON_QUALITY_H
+
+#include <algorithm>
+#include <cmath>
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+namespace mesher {
+
+namespace quality_detail {
+
+inline void cross(const double* x, const double* y, double* z)
+{
+  z[0] = x[1] * y[2] - x[2] * y[1];
+  z[1] = x[2] * y[0] - x[0] * y[2];
+  z[2] = x[0] * y[1] - x[1] * y[0];
+}
+inline double dot(const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+inline double norm(const double* x) { return std::sqrt(dot(x, x)); }
+
+} // namespace quality_detail
+
+// gamma of (a, b, c, d), with the sign of its orientation.
+inline double gamma_quality(const double* a, const double* b, const double* c, const double* d)
+{
+  using namespace quality_detail;
+  double u[3], v[3], w[3], vw[3], wu[3], uv[3];
+  for(int i = 0; i < 3; ++i) {
+    u[i] = b[i] - a[i];
+    v[i] = c[i] - a[i];
+    w[i] = d[i] - a[i];
+  }
+  cross(v, w, vw);
+  cross(w, u, wu);
+  cross(u, v, uv);
+  const double D = dot(u, vw);
+  const double uu = dot(u, u), vv = dot(v, v), ww = dot(w, w);
+  double N[3];
+  for(int i = 0; i < 3; ++i) N[i] = uu * vw[i] + vv * wu[i] + ww * uv[i];
+  // Facet areas times 2: (b, c, d) from (c - b) x (d - b) = vw + wu + uv.
+  double bcd[3] = {vw[0] + wu[0] + uv[0], vw[1] + wu[1] + uv[1], vw[2] + wu[2] + uv[2]};
+  const double twice_area = norm(uv) + norm(vw) + norm(wu) + norm(bcd);
+  const double denominator = twice_area * norm(N);
+  if(!(denominator > 0)) return 0;
+  // 3 D |D| / (A |N|) with A = twice_area / 2.
+  return 6 * D * std::abs(D) / denominator;
+}
+
+// Angle at edge (a, b) between facets (a, b, c) and (a, b, d), in degrees.
+inline double dihedral_degrees(const double* a, const double* b, const double* c, const double* d)
+{
+  using namespace quality_detail;
+  double e[3], u[3], v[3];
+  for(int i = 0; i < 3; ++i) {
+    e[i] = b[i] - a[i];
+    u[i] = c[i] - a[i];
+    v[i] = d[i] - a[i];
+  }
+  double n1[3], n2[3];
+  cross(e, u, n1);
+  cross(e, v, n2);
+  const double l = norm(n1) * norm(n2);
+  if(!(l > 0)) return 0;
+  return std::acos(std::max(-1.0, std::min(1.0, dot(n1, n2) / l))) * 180.0 / 3.14159265358979323846;
+}
+
+struct Dihedral_range
+{
+  double smallest = 180, largest = 0;
+};
+
+inline Dihedral_range dihedral_range(const double* const w[4])
+{
+  static const int edge_of[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                    {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  Dihedral_range r;
+  for(const auto& e : edge_of) {
+    const double angle = dihedral_degrees(w[e[0]], w[e[1]], w[e[2]], w[e[3]]);
+    r.smallest = std::min(r.smallest, angle);
+    r.largest = std::max(r.largest, angle);
+  }
+  return r;
+}
+
+} // namespace mesher
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_MESHER_TETRAHEDRON_QUALITY_H
