@@ -11,13 +11,18 @@
 // The size field is the same for all: h at a surface point is the average length of its surface edges, interpolated
 // inside, capped by --max-size.  Ours does that itself; HXT does it with Mesh.MeshSizeExtendFromBoundary
 // (Mesh.MeshSizeMax = the cap); TetGen gets h at the input points through -m (pointmtrlist) and the cap as a volume
-// bound (-a, the volume of the regular tetrahedron of edge h).  Neither HXT nor TetGen improves the mesh afterwards
-// (Mesh.Optimize = 0, -O0), since ours does not yet: the seconds compare the same work.
+// bound (-a, the volume of the regular tetrahedron of edge h); CGAL's Mesh_3 takes one constant, the median of the
+// surface sizes (mesher_benchmark_cgal.cpp).
 //
+// Every tool runs as a finite-element user runs it, with its mesh improvement: ours (Mesh_improvement.h, on by
+// default), HXT with Gmsh's default Mesh.Optimize = 1 and, as a second row, Mesh.OptimizeNetgen = 1, TetGen with its
+// default optimisation, Mesh_3 with perturb_mesh_3 and exude_mesh_3.  One row of each without it (ours with
+// optimize off, HXT with Mesh.Optimize = 0, TetGen -O0) shows what the step costs and gains.
+
 // Gmsh runs in a helper process, mesher_benchmark_gmsh (mesher_benchmark_io.h says why); without Gmsh
 // (libgmsh-dev) at build time there is no helper, and the HXT rows and the fibre surface are left out.
 //
-// --json FILE writes every row with its quality histograms (radius-edge ratio from the report, and the smallest
+// --json FILE writes every row with its quality histograms (from the report: radius-edge ratio, gamma, the smallest
 // dihedral angle of each tetrahedron); --plot FIGURE writes them to FIGURE's name with .json and has
 // scripts/plot_mesh_quality.py draw every tool's histograms on one figure.
 
@@ -29,6 +34,7 @@
 
 #include <tetgen.h>
 
+#include "mesher_benchmark_cgal.h"
 #include "mesher_benchmark_io.h"
 
 #include <sched.h>
@@ -143,8 +149,9 @@ Benchmark_surface fibre_cube(int count, double h, unsigned seed)
 // triangles in the tool's point numbering (the input points keep their positions in every tool's output).
 struct Run
 {
-  double recovery = 0, refinement = 0, total = 0;
+  double recovery = 0, refinement = 0, improvement = 0, total = 0;
   Mesh mesh;
+  bool surface_remeshed = false; // the tool samples the surface anew (Mesh_3): its boundary is not the input's
 };
 
 struct Tool
@@ -175,10 +182,11 @@ std::vector<double> surface_sizes(const Benchmark_surface& s)
   return h;
 }
 
-Run run_ours(const Benchmark_surface& s, int threads)
+Run run_ours(const Benchmark_surface& s, int threads, bool optimize)
 {
   CGAL::Fast_mesher_3::Mesher_options options;
   options.threads = threads;
+  options.optimize = optimize;
   options.maximum_size = s.maximum_size;
   CGAL::Fast_mesher_3::Mesher_statistics stats;
   Run run;
@@ -186,6 +194,7 @@ Run run_ours(const Benchmark_surface& s, int threads)
   // Algorithm 2's lines 2-3 are the recovery; colouring and sizes belong with the refinement they prepare.
   run.recovery = stats.empty_mesh_seconds + stats.recovery_seconds;
   run.refinement = stats.colouring_seconds + stats.refinement_seconds;
+  run.improvement = stats.improvement_seconds;
   run.total = stats.total_seconds;
   return run;
 }
@@ -249,7 +258,8 @@ void set_input_triangles(const Benchmark_surface& s, Mesh& mesh)
   mesh.number_of_surfaces = s.number_of_components;
 }
 
-Run run_tetgen(const Benchmark_surface& s, const std::string& quality_switches)
+// `optimisation`: TetGen's -O switch, or "" for its default.
+Run run_tetgen(const Benchmark_surface& s, const std::string& quality_switches, const std::string& optimisation)
 {
   tetgenio in, out;
   CGAL::Fast_Delaunay_triangulation_3_internal::mesher::write_tetgen_plc(s.points, s.triangles, in);
@@ -257,8 +267,8 @@ Run run_tetgen(const Benchmark_surface& s, const std::string& quality_switches)
   in.numberofpointmtrs = 1;
   in.pointmtrlist = new REAL[s.points.size()];
   std::copy(h.begin(), h.end(), in.pointmtrlist);
-  // A: one attribute per region (the subdomains); m: sizes at the points; O0: no mesh improvement; z: from 0.
-  std::string switches = quality_switches + "AmO0z";
+  // A: one attribute per region (the subdomains); m: sizes at the points; z: from 0.
+  std::string switches = quality_switches + "Amz" + optimisation;
   if(std::isfinite(s.maximum_size)) {
     std::ostringstream bound;
     bound << "a" << std::pow(s.maximum_size, 3) / (6 * std::sqrt(2.0));
@@ -271,8 +281,9 @@ Run run_tetgen(const Benchmark_surface& s, const std::string& quality_switches)
   Run run;
   run.total = seconds_since(t0);
   run.refinement = logged_seconds(log, "Refinement seconds");
+  run.improvement = logged_seconds(log, "Optimization seconds");
   // TetGen's Delaunay, surface recovery and exterior removal: all that precedes the refinement.
-  run.recovery = run.total - run.refinement - logged_seconds(log, "Optimization seconds");
+  run.recovery = run.total - run.refinement - run.improvement;
 
   Mesh& mesh = run.mesh;
   mesh.points.resize(static_cast<std::size_t>(out.numberofpoints));
@@ -294,21 +305,40 @@ Run run_tetgen(const Benchmark_surface& s, const std::string& quality_switches)
 }
 
 // HXT in the helper process; its seconds are measured there, around Gmsh's generate(3) alone.
-Run run_hxt(const Benchmark_surface& s, int threads)
+// `optimisation`: none, gmsh or netgen (mesher_benchmark_gmsh.cpp).
+Run run_hxt(const Benchmark_surface& s, int threads, const std::string& optimisation)
 {
   const std::string in = scratch_directory() + "/" + s.name + ".surface", out = scratch_directory() + "/hxt.mesh";
   write_surface(in, s);
-  run_gmsh_helper({"hxt", in, std::to_string(threads), out});
+  run_gmsh_helper({"hxt", in, std::to_string(threads), optimisation, out});
   Tool_mesh result = read_tool_mesh(out);
   Run run;
   run.recovery = result.recovery;
   run.refinement = result.refinement;
+  run.improvement = result.improvement;
   run.total = result.total;
   run.mesh.points = std::move(result.points);
   run.mesh.tetrahedra = std::move(result.tetrahedra);
   run.mesh.subdomain = std::move(result.subdomain);
   run.mesh.number_of_subdomains = static_cast<int>(s.volumes.size());
   set_input_triangles(s, run.mesh);
+  return run;
+}
+
+Run run_cgal(const Benchmark_surface& s)
+{
+  std::vector<double> h = surface_sizes(s);
+  std::nth_element(h.begin(), h.begin() + h.size() / 2, h.end());
+  Cgal_mesh_3_run result = run_cgal_mesh_3(s, h[h.size() / 2]);
+  Run run;
+  run.refinement = result.refinement;
+  run.improvement = result.improvement;
+  run.total = result.total;
+  run.mesh.points = std::move(result.points);
+  run.mesh.tetrahedra = std::move(result.tetrahedra);
+  run.mesh.subdomain.assign(run.mesh.tetrahedra.size(), 1);
+  run.mesh.number_of_subdomains = 1;
+  run.surface_remeshed = true;
   return run;
 }
 
@@ -330,37 +360,16 @@ CGAL::Fast_mesher_3::Quality_report quality_of(Mesh mesh)
   return CGAL::Fast_mesher_3::quality_report(mesh);
 }
 
-// The figure's second histogram: the smallest of the six dihedral angles of each tetrahedron, in bins of
-// `min_dihedral_bin_degrees` from 0 (a regular tetrahedron's are 70.53 degrees, so the last bin is [70, 72)).
-// Slivers, which the radius-edge ratio does not see, are the first bins.
-constexpr double min_dihedral_bin_degrees = 2;
-
-std::vector<std::size_t> min_dihedral_histogram(const Mesh& mesh)
-{
-  static const int edge_of[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  std::vector<std::size_t> histogram(static_cast<std::size_t>(std::ceil(72 / min_dihedral_bin_degrees)), 0);
-  for(const auto& t : mesh.tetrahedra) {
-    double smallest = 180;
-    for(const auto& e : edge_of)
-      smallest = std::min(smallest, CGAL::Fast_Delaunay_triangulation_3_internal::mesher::dihedral_degrees(
-                                        mesh.points[t[e[0]]].data(), mesh.points[t[e[1]]].data(),
-                                        mesh.points[t[e[2]]].data(), mesh.points[t[e[3]]].data()));
-    const std::size_t bin = static_cast<std::size_t>(smallest / min_dihedral_bin_degrees);
-    ++histogram[std::min(bin, histogram.size() - 1)];
-  }
-  return histogram;
-}
-
 // ------------------------------------------------------------------------------------------------ table
 
 struct Row
 {
   const Benchmark_surface* surface;
   const Tool* tool;
-  std::vector<double> recovery, refinement, total;
+  std::vector<double> recovery, refinement, improvement, total;
   std::size_t tetrahedra = 0;
   CGAL::Fast_mesher_3::Quality_report quality;
-  std::vector<std::size_t> min_dihedral_histogram;
+  bool surface_remeshed = false;
   std::string failure;
 };
 
@@ -418,8 +427,10 @@ void print_header(const std::string& date, int rounds)
 #endif
   std::printf("\nmethod:  medians of %d interleaved rounds; seconds from the triangle surface in memory to the tool's\n"
               "         mesh (ours: without the input checks); tetrahedra / s = tetrahedra / total; quality by the\n"
-              "         mesher's own report on each tool's output; no tool improves its mesh (HXT Mesh.Optimize=0,\n"
-              "         TetGen -O0)\n\n",
+              "         mesher's own report on each tool's output; 'improve' is each tool's mesh improvement (ours,\n"
+              "         HXT Mesh.Optimize=1 [+netgen], TetGen's default -O, Mesh_3 perturb+exude); -noopt rows without it;\n"
+              "         dih1%% = 1st percentile of each tetrahedron's smallest dihedral angle; g<0.3 = share of\n"
+              "         tetrahedra with gamma = 3 r_in / r_circ under 0.3\n\n",
               rounds);
 }
 
@@ -434,22 +445,25 @@ void print_surfaces(const std::vector<Benchmark_surface>& surfaces)
 
 void print_table(const std::vector<Row>& rows)
 {
-  std::printf("%-12s %-13s %3s %9s %9s %9s %10s %10s %8s %8s %8s  %s\n", "surface", "tool", "thr", "recovery",
-              "refine", "total s", "tetrahedra", "tets/s", "min dih", "max dih", "inverted",
+  std::printf("%-12s %-17s %3s %8s %8s %8s %8s %9s %9s %7s %7s %8s %7s %4s  %s\n", "surface", "tool", "thr", "recovery",
+              "refine", "improve", "total s", "tets", "tets/s", "min dih", "dih1%", "min g", "g<0.3", "inv",
               "boundary = input (missing input triangles / extra boundary facets)");
   for(const Row& r : rows) {
     if(!r.failure.empty()) {
-      std::printf("%-12s %-13s %3d failed: %s\n", r.surface->name.c_str(), r.tool->name.c_str(), r.tool->threads,
+      std::printf("%-12s %-17s %3d failed: %s\n", r.surface->name.c_str(), r.tool->name.c_str(), r.tool->threads,
                   r.failure.c_str());
       continue;
     }
     const double total = median(r.total);
-    std::printf("%-12s %-13s %3d %9.3f %9.3f %9.3f %10zu %10.0f %8.3f %8.3f %8zu  %s", r.surface->name.c_str(),
-                r.tool->name.c_str(), r.tool->threads, median(r.recovery), median(r.refinement), total, r.tetrahedra,
-                r.tetrahedra / total, r.quality.min_dihedral_degrees, r.quality.max_dihedral_degrees,
-                r.quality.inverted_tetrahedra, r.quality.boundary_equals_input() ? "yes" : "NO");
-    if(!r.quality.boundary_equals_input())
-      std::printf(" (%zu / %zu)", r.quality.missing_input_triangles, r.quality.extra_boundary_facets);
+    const CGAL::Fast_mesher_3::Quality_report& q = r.quality;
+    std::printf("%-12s %-17s %3d %8.3f %8.3f %8.3f %8.3f %9zu %9.0f %7.3f %7.2f %8.2g %6.2f%% %4zu  %s",
+                r.surface->name.c_str(), r.tool->name.c_str(), r.tool->threads, median(r.recovery),
+                median(r.refinement), median(r.improvement), total, r.tetrahedra, r.tetrahedra / total,
+                q.min_dihedral_degrees, q.min_dihedral_1st_percentile, q.min_gamma,
+                q.tetrahedra ? 100.0 * q.tetrahedra_below_gamma_0_3 / q.tetrahedra : 0.0, q.inverted_tetrahedra,
+                r.surface_remeshed ? "remeshed" : q.boundary_equals_input() ? "yes" : "NO");
+    if(!r.surface_remeshed && !q.boundary_equals_input())
+      std::printf(" (%zu / %zu)", q.missing_input_triangles, q.extra_boundary_facets);
     std::printf("\n");
   }
 }
@@ -488,7 +502,8 @@ void write_json(const std::string& path, const std::string& date, int rounds, co
   out << "{\n  \"benchmark\": \"mesher_benchmark\",\n  \"date\": " << json_string(date)
       << ",\n  \"machine\": " << json_string(machine()) << ",\n  \"rounds\": " << rounds
       << ",\n  \"radius_edge_bin_lower\": " << json_list(radius_edge_bins)
-      << ",\n  \"min_dihedral_bin_degrees\": " << min_dihedral_bin_degrees << ",\n  \"rows\": [";
+      << ",\n  \"min_dihedral_bin_degrees\": " << CGAL::Fast_mesher_3::Quality_report().min_dihedral_bin_degrees
+      << ",\n  \"rows\": [";
   for(std::size_t i = 0; i < rows.size(); ++i) {
     const Row& r = rows[i];
     out << (i ? "," : "") << "\n    {\"surface\": " << json_string(r.surface->name)
@@ -505,7 +520,9 @@ void write_json(const std::string& path, const std::string& date, int rounds, co
         << q.max_radius_edge << ", \"inverted_tetrahedra\": " << q.inverted_tetrahedra
         << ", \"boundary_equals_input\": " << (q.boundary_equals_input() ? "true" : "false")
         << ",\n     \"radius_edge_histogram\": " << json_list(q.radius_edge_histogram)
-        << ",\n     \"min_dihedral_histogram\": " << json_list(r.min_dihedral_histogram) << "}";
+        << ",\n     \"min_dihedral_histogram\": " << json_list(q.min_dihedral_histogram)
+        << ",\n     \"gamma_histogram\": " << json_list(q.gamma_histogram) << ", \"min_gamma\": " << q.min_gamma
+        << ", \"improvement_seconds\": " << median(r.improvement) << "}";
   }
   out << "\n  ]\n}\n";
   if(!out) throw std::runtime_error("cannot write " + path);
@@ -639,15 +656,20 @@ std::vector<Benchmark_surface> load_surfaces(const Options& o)
 std::vector<Tool> tools()
 {
   std::vector<Tool> t;
-  t.push_back({"ours", 1, [](const Benchmark_surface& s) { return run_ours(s, 1); }});
-  t.push_back({"ours", 2, [](const Benchmark_surface& s) { return run_ours(s, 2); }});
+  t.push_back({"ours", 1, [](const Benchmark_surface& s) { return run_ours(s, 1, true); }});
+  t.push_back({"ours", 2, [](const Benchmark_surface& s) { return run_ours(s, 2, true); }});
+  t.push_back({"ours-noopt", 2, [](const Benchmark_surface& s) { return run_ours(s, 2, false); }});
   // HXT on 1 thread too, beside ours on 1 thread.
   if(!gmsh_helper().empty()) {
-    t.push_back({"gmsh-hxt", 1, [](const Benchmark_surface& s) { return run_hxt(s, 1); }});
-    t.push_back({"gmsh-hxt", 2, [](const Benchmark_surface& s) { return run_hxt(s, 2); }});
+    t.push_back({"gmsh-hxt", 1, [](const Benchmark_surface& s) { return run_hxt(s, 1, "gmsh"); }});
+    t.push_back({"gmsh-hxt", 2, [](const Benchmark_surface& s) { return run_hxt(s, 2, "gmsh"); }});
+    t.push_back({"gmsh-hxt+netgen", 2, [](const Benchmark_surface& s) { return run_hxt(s, 2, "netgen"); }});
+    t.push_back({"gmsh-hxt-noopt", 2, [](const Benchmark_surface& s) { return run_hxt(s, 2, "none"); }});
   }
-  t.push_back({"tetgen-pq1.4", 1, [](const Benchmark_surface& s) { return run_tetgen(s, "pq1.4"); }});
-  t.push_back({"tetgen-pYq1.4", 1, [](const Benchmark_surface& s) { return run_tetgen(s, "pYq1.4"); }});
+  t.push_back({"tetgen-pq1.4", 1, [](const Benchmark_surface& s) { return run_tetgen(s, "pq1.4", ""); }});
+  t.push_back({"tetgen-pq1.4-O0", 1, [](const Benchmark_surface& s) { return run_tetgen(s, "pq1.4", "O0"); }});
+  t.push_back({"tetgen-pYq1.4", 1, [](const Benchmark_surface& s) { return run_tetgen(s, "pYq1.4", ""); }});
+  t.push_back({"cgal-mesh-3", 1, [](const Benchmark_surface& s) { return run_cgal(s); }});
   return t;
 }
 
@@ -665,7 +687,7 @@ int main(int argc, char** argv)
     const std::vector<Tool> all_tools = tools();
     std::vector<Row> rows;
     for(const Benchmark_surface& s : surfaces)
-      for(const Tool& t : all_tools) rows.push_back(Row{&s, &t, {}, {}, {}, 0, {}, {}, ""});
+      for(const Tool& t : all_tools) rows.push_back(Row{&s, &t, {}, {}, {}, {}, 0, {}, false, ""});
 
     for(int round = 0; round < options.rounds; ++round)
       for(Row& row : rows) {
@@ -674,13 +696,12 @@ int main(int argc, char** argv)
           Run run = row.tool->run(*row.surface);
           row.recovery.push_back(run.recovery);
           row.refinement.push_back(run.refinement);
+          row.improvement.push_back(run.improvement);
           row.total.push_back(run.total);
+          row.surface_remeshed = run.surface_remeshed;
           row.tetrahedra = run.mesh.tetrahedra.size();
           // The report is slow (std::map of facets): once, on the last round's mesh.
-          if(round + 1 == options.rounds) {
-            row.min_dihedral_histogram = min_dihedral_histogram(run.mesh);
-            row.quality = quality_of(std::move(run.mesh));
-          }
+          if(round + 1 == options.rounds) row.quality = quality_of(std::move(run.mesh));
         } catch(const std::exception& e) {
           row.failure = e.what();
         } catch(...) {

@@ -93,7 +93,7 @@ struct Tool_mesh
   std::vector<Point> points;
   std::vector<std::array<std::uint32_t, 4>> tetrahedra;
   std::vector<int> subdomain;
-  double recovery = 0, refinement = 0, total = 0;
+  double recovery = 0, refinement = 0, improvement = 0, total = 0;
 };
 
 class Binary_file
@@ -176,6 +176,7 @@ inline void write_tool_mesh(const std::string& path, const Tool_mesh& m)
   f.put(m.subdomain);
   f.put(m.recovery);
   f.put(m.refinement);
+  f.put(m.improvement);
   f.put(m.total);
 }
 
@@ -188,6 +189,7 @@ inline Tool_mesh read_tool_mesh(const std::string& path)
   f.get(m.subdomain);
   f.get(m.recovery);
   f.get(m.refinement);
+  f.get(m.improvement);
   f.get(m.total);
   return m;
 }

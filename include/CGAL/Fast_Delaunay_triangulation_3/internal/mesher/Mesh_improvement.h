@@ -80,6 +80,10 @@ struct Improvement_statistics
   // Of the bad tetrahedra left, those whose four vertices are on the
   // surface: relocation cannot touch them and only a Steiner point could.
   std::size_t bad_after_on_surface = 0;
+  // Of those, the ones on an input triangle so skinny that even the apex
+  // that makes it a regular tetrahedron gives gamma under the threshold:
+  // the surface itself forces them.
+  std::size_t bad_after_forced_by_surface = 0;
   std::size_t edge_removals = 0, face_removals = 0, relocations = 0;
   std::size_t deferred = 0; // operations that met another partition and were retried
   std::size_t operations_in_partitions = 0; // of the operations, those done in attempts with several partitions
@@ -126,8 +130,9 @@ public:
     dihedral_figures(stats.min_dihedral_after, stats.below_10_degrees_after);
     for(const Bad_tet& b : bad) {
       const Vertex_id* tv = cm_.mesh.vertex_ids(b.t);
-      stats.bad_after_on_surface +=
-          on_surface_[tv[0]] && on_surface_[tv[1]] && on_surface_[tv[2]] && on_surface_[tv[3]] ? 1 : 0;
+      if(!(on_surface_[tv[0]] && on_surface_[tv[1]] && on_surface_[tv[2]] && on_surface_[tv[3]])) continue;
+      ++stats.bad_after_on_surface;
+      stats.bad_after_forced_by_surface += on_skinny_input_triangle(b.t) ? 1 : 0;
     }
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return stats;
@@ -255,6 +260,22 @@ private:
       smallest = std::min(smallest, angle);
       below_10_degrees += angle < 10 ? 1 : 0;
     }
+  }
+
+  bool on_skinny_input_triangle(Tet_id t) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    for(int f = 0; f < 4; ++f) {
+      if(!cm_.is_constrained(t, f)) continue;
+      double apex[3];
+      regular_apex(t, m.vertex(t, f), apex);
+      const Vertex_id* tv = m.vertex_ids(t);
+      const double* x = m.point(tv[facet_vertex[f][0]]);
+      const double* y = m.point(tv[facet_vertex[f][1]]);
+      const double* z = m.point(tv[facet_vertex[f][2]]);
+      if(gamma_quality(apex, x, y, z) < options_.quality_threshold) return true;
+    }
+    return false;
   }
 
   // ------------------------------------------------------------ partitions
