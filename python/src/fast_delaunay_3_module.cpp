@@ -585,10 +585,8 @@ private:
 #ifdef FDT3_PYTHON_WITH_MESHER
 CGAL::Fast_mesher_3::Mesher_options mesher_options(const py::object& size, const py::object& threads, bool optimize)
 {
-  if(optimize)
-    throw py::value_error("mesh: optimize=True needs mesh improvement (sliver removal), which this version does "
-                          "not have; pass optimize=False");
   CGAL::Fast_mesher_3::Mesher_options options;
+  options.optimize = optimize;
   if(!size.is_none()) {
     options.maximum_size = size.cast<double>();
     if(!(options.maximum_size > 0)) throw py::value_error("mesh: size must be positive");
@@ -736,7 +734,7 @@ equal to an earlier vertex's point names that vertex.)")
 
 #ifdef FDT3_PYTHON_WITH_MESHER
   m.def("mesh", &mesh, py::arg("vertices"), py::arg("triangles"), py::arg("size") = py::none(),
-        py::arg("threads") = py::none(), py::arg("optimize") = false,
+        py::arg("threads") = py::none(), py::arg("optimize") = true,
         R"(Tetrahedral mesh of the volumes bounded by closed triangulated surfaces.
 
 vertices (n, 3), triangles (t, 3) indices into vertices.  Returns (points,
@@ -746,6 +744,6 @@ surface's own, interpolated).  A surface that is not closed, oriented,
 manifold and free of self-intersections raises ValueError naming the
 triangles.)");
   m.def("mesh_files", &mesh_files, py::arg("paths"), py::arg("size") = py::none(), py::arg("threads") = py::none(),
-        py::arg("optimize") = false, "mesh() of the surfaces in files (.off .stl .obj .ply).");
+        py::arg("optimize") = true, "mesh() of the surfaces in files (.off .stl .obj .ply).");
 #endif
 }

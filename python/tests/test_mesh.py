@@ -68,10 +68,26 @@ def test_bad_triangle_arrays_raise(triangles, words):
 def test_bad_options_raise():
     with pytest.raises(ValueError, match="size must be positive"):
         fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=-1)
-    with pytest.raises(ValueError, match="optimize=True"):
-        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, optimize=True)
     with pytest.raises(ValueError, match="no file"):
         fast_delaunay_3.mesh_files([])
+
+
+def test_the_improvement_keeps_the_volume_and_removes_slivers():
+    path = os.path.join(os.environ.get("FDT3_CGAL_DATA_DIR", ""), "fandisk.off")
+    if not os.path.exists(path):
+        pytest.skip(f"{path} is missing (apt install libcgal-demo, re-run CMake)")
+    plain = fast_delaunay_3.mesh_files([path], optimize=False)
+    improved = fast_delaunay_3.mesh_files([path])
+    v_plain, v_improved = signed_volumes(plain[0], plain[1]), signed_volumes(improved[0], improved[1])
+    assert (v_improved > 0).all()
+    assert abs(v_improved.sum() - v_plain.sum()) < 1e-9 * v_plain.sum()
+    assert len(improved[0]) == len(plain[0])  # no point added or removed
+    # Slivers: volume tiny against the cube of the longest edge.
+    def slivers(points, tets, volumes):
+        corners = points[tets]
+        edges = np.max([np.linalg.norm(corners[:, i] - corners[:, j], axis=1) for i in range(4) for j in range(i)], axis=0)
+        return int((volumes < 1e-3 * edges ** 3).sum())
+    assert slivers(improved[0], improved[1], v_improved) < slivers(plain[0], plain[1], v_plain) / 10
 
 
 def test_a_cgal_data_surface_from_its_file():
