@@ -48,6 +48,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Radix_sort.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Tetrahedra_replacement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Constrained_mesh.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Sizing.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedron_quality.h>
 
 #include <algorithm>
@@ -719,11 +720,6 @@ private:
     // orientation(v, x, y, z) > 0 means (v - x) . n < 0.
     const double height = nn > 0 ? -std::sqrt(2.0 / 3.0) * edge / nn : 0;
     for(int a = 0; a < 3; ++a) out[a] = (x[a] + y[a] + z[a]) / 3 + height * n[a];
-  }
-
-  static double distance(const double* p, const double* q)
-  {
-    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
   }
 
   Outcome relocate(Worker& w, Vertex_id v)
