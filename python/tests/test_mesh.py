@@ -81,7 +81,8 @@ def test_the_improvement_keeps_the_volume_and_removes_slivers():
     v_plain, v_improved = signed_volumes(plain[0], plain[1]), signed_volumes(improved[0], improved[1])
     assert (v_improved > 0).all()
     assert abs(v_improved.sum() - v_plain.sum()) < 1e-9 * v_plain.sum()
-    assert len(improved[0]) == len(plain[0])  # no point added or removed
+    # Interior Steiner points only where no flip or move helps: a handful.
+    assert 0 <= len(improved[0]) - len(plain[0]) < 0.01 * len(plain[0])
     # Slivers: volume tiny against the cube of the longest edge.
     def slivers(points, tets, volumes):
         corners = points[tets]

@@ -22,6 +22,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -98,6 +100,31 @@ inline mi::Constrained_mesh random_cube_mesh(int k, unsigned seed, bool two_subd
     subdomain.push_back(two_subdomains && x < 0.5 ? 2 : 1);
   }
   return constrained_mesh(points, tets, [&](Tet_id t) { return subdomain[t]; });
+}
+
+// CGAL's Delaunay triangulation of n random points on the unit sphere:
+// every vertex is on the surface (the hull), so no vertex may move, and the
+// tetrahedra inside are as bad as chance makes them.
+inline mi::Constrained_mesh sphere_points_mesh(int n, unsigned seed)
+{
+  CGAL::Random random(seed);
+  std::vector<K::Point_3> input;
+  while(static_cast<int>(input.size()) < n) {
+    const double x = random.get_double(-1, 1), y = random.get_double(-1, 1), z = random.get_double(-1, 1);
+    const double r = std::sqrt(x * x + y * y + z * z);
+    if(r > 0.1 && r <= 1) input.emplace_back(x / r, y / r, z / r);
+  }
+  CGAL::Delaunay_triangulation_3<K> dt(input.begin(), input.end());
+  std::vector<std::array<double, 3>> points;
+  std::map<CGAL::Delaunay_triangulation_3<K>::Vertex_handle, Vertex_id> id;
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    id[v] = static_cast<Vertex_id>(points.size());
+    points.push_back({v->point().x(), v->point().y(), v->point().z()});
+  }
+  std::vector<std::array<Vertex_id, 4>> tets;
+  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+    tets.push_back({id[c->vertex(0)], id[c->vertex(1)], id[c->vertex(2)], id[c->vertex(3)]});
+  return constrained_mesh(points, tets);
 }
 
 inline double gamma_of(const mi::Constrained_mesh& cm, Tet_id t)

@@ -8,7 +8,8 @@
 // rings of 3 to 7 tetrahedra); random Delaunay meshes, one and two
 // subdomains: valid, positively oriented (exact), constrained facets,
 // surface vertices and subdomain volumes unchanged, the worst gamma never
-// lower; the replacement refusing a region it does not close; the mesher
+// lower; interior Steiner points where every vertex is on the surface;
+// the replacement refusing a region it does not close; the mesher
 // with and without the step, through the quality report.
 
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
@@ -23,6 +24,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace test_mesher_improvement {
@@ -187,6 +191,53 @@ TEST(Improvement, TwoSubdomainsKeepTheirInterface)
   expect_improved(cm, mi::Improvement_options(), nullptr);
 }
 
+// Every vertex on the surface: relocation cannot help, edge removal and
+// face flips only so far; what is left needs interior Steiner points, which
+// split edges or facets and are placed by the relocation's search.
+TEST(Improvement, SteinerPointsWhereNoVertexMayMove)
+{
+  mi::Constrained_mesh without = sphere_points_mesh(60, 5);
+  mi::Improvement_options keep_the_vertices;
+  keep_the_vertices.add_steiner_points = false;
+  const mi::Improvement_statistics stats_without = mi::improve_mesh(without, keep_the_vertices);
+  EXPECT_EQ(stats_without.steiner_points, 0u);
+  EXPECT_EQ(stats_without.relocations, 0u);
+
+  mi::Constrained_mesh cm = sphere_points_mesh(60, 5);
+  expect_valid(cm);
+  const Invariants before = invariants(cm);
+  const std::size_t vertices_before = cm.mesh.vertices.size();
+  const double worst = worst_gamma(cm);
+  mi::Improvement_options options;
+  const std::size_t bad = count_below(cm, options.quality_threshold);
+  const mi::Improvement_statistics stats = mi::improve_mesh(cm, options);
+  expect_valid(cm);
+  expect_same_invariants(before, invariants(cm));
+  EXPECT_GT(stats.steiner_points, 0u);
+  EXPECT_EQ(cm.mesh.vertices.size(), vertices_before + stats.steiner_points);
+  EXPECT_EQ(cm.size.size(), cm.mesh.vertices.size());
+  EXPECT_EQ(stats.bad_before, bad);
+  EXPECT_EQ(stats.bad_after, count_below(cm, options.quality_threshold));
+  EXPECT_EQ(without.mesh.vertices.size(), vertices_before);
+  // Far from all: 60 points on a sphere need a refinement's worth of
+  // interior points, and a split may leave two more bad tetrahedra than it
+  // removes.  But the worst is much better than without Steiner points.
+  EXPECT_LT(stats.bad_after, bad);
+  EXPECT_GT(worst_gamma(cm), 5 * worst);
+  EXPECT_GT(worst_gamma(cm), 2 * worst_gamma(without));
+  // Every added vertex is inside: on no constrained facet.
+  for(Tet_id t = 0; t < cm.mesh.number_of_slots(); ++t) {
+    if(!cm.mesh.is_live(t)) continue;
+    for(int f = 0; f < 4; ++f) {
+      if(!cm.is_constrained(t, f)) continue;
+      for(int i = 0; i < 3; ++i) {
+        EXPECT_LT(cm.mesh.vertex(t, CGAL::Fast_Delaunay_triangulation_3_internal::facet_vertex[f][i]),
+                  vertices_before);
+      }
+    }
+  }
+}
+
 TEST(Improvement, ReplacementRefusesARegionItDoesNotClose)
 {
   mi::Constrained_mesh cm = edge_ring(5, 2.0);
@@ -228,7 +279,7 @@ TEST(Improvement, MesherOptimizesByDefault)
   mesher_checks::expect_every_tetrahedron_tagged(improved);
   EXPECT_NEAR(mesher_checks::volume_of_subdomain(improved, 1), mesher_checks::volume_of_subdomain(plain, 1),
               1e-9 * mesher_checks::volume_of_subdomain(plain, 1));
-  EXPECT_EQ(plain.points.size(), improved.points.size());
+  EXPECT_EQ(improved.points.size(), plain.points.size() + stats_on.improvement.steiner_points);
 
   // The report's histograms count every tetrahedron once.
   std::size_t in_gamma = 0, in_dihedral = 0;
@@ -240,6 +291,116 @@ TEST(Improvement, MesherOptimizesByDefault)
   EXPECT_LE(q_on.gamma_1st_percentile, q_on.mean_gamma);
   EXPECT_LE(q_on.min_dihedral_degrees, q_on.min_dihedral_1st_percentile);
   EXPECT_LE(q_on.min_dihedral_1st_percentile, q_on.mean_min_dihedral);
+}
+
+// The public function on a mesh of one's own: here the mesher's, unimproved.
+TEST(Improvement, ImproveMeshOnAnExistingMesh)
+{
+  using namespace CGAL::Fast_mesher_3;
+  const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 40, 16);
+  Mesher_options off;
+  off.optimize = false;
+  const Tetrahedral_mesh plain = mesh_surfaces(s.points, s.triangles, off);
+  const Quality_report q_plain = quality_report(plain);
+  Tetrahedral_mesh mesh = plain;
+  const Improvement_statistics stats = improve_mesh(mesh);
+  const Quality_report q = quality_report(mesh);
+  EXPECT_EQ(stats.bad_before, q_plain.tetrahedra_below_gamma_0_3);
+  EXPECT_EQ(stats.bad_after, q.tetrahedra_below_gamma_0_3);
+  EXPECT_LT(q.tetrahedra_below_gamma_0_3, q_plain.tetrahedra_below_gamma_0_3 / 4);
+  EXPECT_GE(q.min_gamma, q_plain.min_gamma);
+  EXPECT_EQ(q.inverted_tetrahedra, 0u);
+  EXPECT_TRUE(q.boundary_equals_input());
+  mesher_checks::expect_all_positive(mesh);
+  mesher_checks::expect_boundary_is_input(mesh, s);
+  mesher_checks::expect_every_tetrahedron_tagged(mesh);
+  EXPECT_NEAR(mesher_checks::volume_of_subdomain(mesh, 1), mesher_checks::volume_of_subdomain(plain, 1),
+              1e-9 * mesher_checks::volume_of_subdomain(plain, 1));
+  // The given points keep their numbers; those on a triangle do not move.
+  ASSERT_EQ(mesh.points.size(), plain.points.size() + stats.steiner_points);
+  ASSERT_EQ(mesh.size.size(), mesh.points.size());
+  EXPECT_TRUE(mesh.triangles == plain.triangles);
+  for(const auto& tri : plain.triangles)
+    for(std::uint32_t v : tri) EXPECT_TRUE(mesh.points[v] == plain.points[v]) << v;
+
+  // Without Steiner points: the same points, some moved.
+  Mesher_options keep;
+  keep.improvement_adds_points = false;
+  Tetrahedral_mesh same_points = plain;
+  EXPECT_EQ(improve_mesh(same_points, keep).steiner_points, 0u);
+  EXPECT_EQ(same_points.points.size(), plain.points.size());
+}
+
+// A mesh it cannot take is refused with the defect named, and left as it was.
+TEST(Improvement, ImproveMeshRefusesBadMeshes)
+{
+  using namespace CGAL::Fast_mesher_3;
+  const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 20, 8);
+  Mesher_options off;
+  off.optimize = false;
+  const Tetrahedral_mesh good = mesh_surfaces(s.points, s.triangles, off);
+  auto expect_refused = [](Tetrahedral_mesh bad, const std::string& words) {
+    const Tetrahedral_mesh before = bad;
+    try {
+      improve_mesh(bad);
+      ADD_FAILURE() << "accepted a mesh with " << words;
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+    // Bitwise: a NaN coordinate is not equal to itself.
+    EXPECT_TRUE(bad.points.size() == before.points.size() &&
+                std::memcmp(bad.points.data(), before.points.data(), bad.points.size() * sizeof(bad.points[0])) == 0 &&
+                bad.tetrahedra == before.tetrahedra && bad.subdomain == before.subdomain &&
+                bad.triangles == before.triangles);
+  };
+  Tetrahedral_mesh inverted = good;
+  std::swap(inverted.tetrahedra[7][0], inverted.tetrahedra[7][1]);
+  expect_refused(inverted, "tetrahedron #7 is not positively oriented");
+  Tetrahedral_mesh out_of_range = good;
+  out_of_range.tetrahedra[3][2] = static_cast<std::uint32_t>(good.points.size());
+  expect_refused(out_of_range, "tetrahedron #3 refers to point");
+  Tetrahedral_mesh untagged = good;
+  untagged.subdomain.pop_back();
+  expect_refused(untagged, "subdomain tags for");
+  Tetrahedral_mesh zero_tag = good;
+  zero_tag.subdomain[5] = 0;
+  expect_refused(zero_tag, "tetrahedron #5 has subdomain 0");
+  Tetrahedral_mesh not_a_facet = good;
+  not_a_facet.triangles[0] = {not_a_facet.triangles[0][0], not_a_facet.triangles[1][1], not_a_facet.triangles[2][2]};
+  expect_refused(not_a_facet, "triangle #0 is not a facet");
+  Tetrahedral_mesh hole = good; // tetrahedron 10 has an input triangle
+  hole.tetrahedra.erase(hole.tetrahedra.begin() + 10);
+  hole.subdomain.pop_back();
+  expect_refused(hole, "is not a facet of the tetrahedra");
+  Tetrahedral_mesh doubled = good;
+  doubled.tetrahedra.push_back(doubled.tetrahedra[0]);
+  doubled.subdomain.push_back(1);
+  expect_refused(doubled, "tetrahedra");
+  Tetrahedral_mesh not_finite = good;
+  not_finite.points[2][1] = std::numeric_limits<double>::quiet_NaN();
+  expect_refused(not_finite, "point #2 has a coordinate that is not finite");
+  Tetrahedral_mesh empty;
+  expect_refused(empty, "no tetrahedra");
+  // Two tetrahedra meeting at an edge only: four boundary facets there.
+  Tetrahedral_mesh bowtie;
+  bowtie.points = {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  bowtie.tetrahedra = {{0, 1, 2, 3}, {0, 1, 4, 5}};
+  for(auto& t : bowtie.tetrahedra)
+    if(CGAL::orientation(to_point(bowtie.points[t[0]]), to_point(bowtie.points[t[1]]), to_point(bowtie.points[t[2]]),
+                         to_point(bowtie.points[t[3]])) != CGAL::POSITIVE)
+      std::swap(t[2], t[3]);
+  bowtie.subdomain = {1, 1};
+  expect_refused(bowtie, "the boundary edge (0, 1) is in 4 boundary facets");
+  // The two apart: a valid mesh of two tetrahedra, improved (nothing to move).
+  bowtie.points[4] = {-1, 0, 2};
+  bowtie.points[5] = {0, -1, 2};
+  bowtie.points.push_back({-1, -1, 4});
+  bowtie.tetrahedra[1] = {4, 5, 6, 1};
+  if(CGAL::orientation(to_point(bowtie.points[4]), to_point(bowtie.points[5]), to_point(bowtie.points[6]),
+                       to_point(bowtie.points[1])) != CGAL::POSITIVE)
+    std::swap(bowtie.tetrahedra[1][0], bowtie.tetrahedra[1][1]);
+  EXPECT_NO_THROW(improve_mesh(bowtie));
+  EXPECT_EQ(bowtie.tetrahedra.size(), 2u);
 }
 
 } // namespace test_mesher_improvement

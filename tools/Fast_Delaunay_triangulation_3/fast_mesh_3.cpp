@@ -126,7 +126,8 @@ int main(int argc, char** argv)
       if(options.optimize) {
         const auto& im = stats.improvement;
         std::cout << " (" << im.passes << " passes: " << im.edge_removals << " edge removals, " << im.face_removals
-                  << " face removals, " << im.relocations << " relocations, " << im.deferred
+                  << " face removals, " << im.relocations << " relocations, " << im.steiner_points
+                  << " Steiner points, " << im.deferred
                   << " deferred between partitions)\n"
                   << "  tetrahedra under gamma " << options.quality_threshold << ": " << im.bad_before << " before, "
                   << im.bad_after << " after (" << im.bad_after_on_surface

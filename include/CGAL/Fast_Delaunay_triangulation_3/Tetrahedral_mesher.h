@@ -21,10 +21,14 @@
 //       CGAL::Fast_mesher_3::mesh_surface_files({"part.off"}, options);
 //   CGAL::Fast_mesher_3::write_mesh("part.mesh", mesh);
 //
+//   improvement      edge and face removals, vertex relocation, then interior
+//                    Steiner points, on tetrahedra under a gamma threshold,
+//                    in the same partitions (Mesh_improvement.h); also on a
+//                    mesh of your own: improve_mesh
+//
 // Also as CGAL's Mesh_complex_3_in_triangulation_3: mesh_surfaces_to_c3t3.
 //
-// Not yet (issue 5): no user size function; no mesh improvement (slivers
-// stay); surfaces may not touch.
+// Not yet: no user size function; surfaces may not touch.
 
 #ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
@@ -48,6 +52,7 @@
 #include <functional>
 #include <limits>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,6 +60,7 @@ namespace CGAL {
 namespace Fast_mesher_3 {
 
 typedef Fast_Delaunay_triangulation_3_internal::mesher::Invalid_surface Invalid_surface;
+typedef Fast_Delaunay_triangulation_3_internal::mesher::Improvement_statistics Improvement_statistics;
 
 struct Mesher_options
 {
@@ -74,12 +80,14 @@ struct Mesher_options
   double min_edge_ratio = 0.7;
   int max_refinement_passes = 200;
   // Mesh improvement after refinement (Mesh_improvement.h): edge and face
-  // removals and vertex relocation on every tetrahedron whose gamma =
-  // 3 r_in / r_circ is under quality_threshold (Gmsh's default target),
-  // with the same partitions as refinement.  Off: the refined Delaunay mesh.
+  // removals, vertex relocation and, where nothing else helps, interior
+  // Steiner points, on every tetrahedron whose gamma = 3 r_in / r_circ is
+  // under quality_threshold (Gmsh's default target), with the same
+  // partitions as refinement.  Off: the refined Delaunay mesh.
   bool optimize = true;
   double quality_threshold = 0.3;
   int max_improvement_passes = 10;
+  bool improvement_adds_points = true; // off: the improvement keeps the refined mesh's points
   // Called after each refinement pass with (pass number, points inserted,
   // tetrahedra in the volumes); the library itself prints nothing.
   std::function<void(int, std::size_t, std::size_t)> progress;
@@ -173,6 +181,7 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
     Improvement_options improvement;
     improvement.quality_threshold = options.quality_threshold;
     improvement.max_passes = options.max_improvement_passes;
+    improvement.add_steiner_points = options.improvement_adds_points;
     improvement.threads = std::max(1, options.threads);
     stats.improvement = improve_mesh(cm, improvement);
     stats.improvement_seconds = stats.improvement.seconds;
@@ -254,6 +263,161 @@ Tetrahedral_mesh mesh_surfaces_to_c3t3(const std::vector<std::array<double, 3>>&
                                       options, statistics, [&](const auto& cm, const auto& soup) {
                                         mesher_detail::constrained_mesh_to_c3t3(cm, soup, c3t3);
                                       });
+}
+
+namespace mesher_detail {
+
+using namespace Fast_Delaunay_triangulation_3_internal;
+
+inline void refuse_mesh(const std::string& what) { throw std::invalid_argument("improve_mesh: " + what); }
+
+// `mesh` checked and as a constrained mesh at the unit scale of `scaling`:
+// its tetrahedra positive (exact), no facet in three of them, every
+// boundary edge in two boundary facets, its triangles facets of the mesh.
+// Constrained: its triangles, the boundary, and every facet between two
+// subdomains.  Vertex ids are the mesh's point indices.
+inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const Unit_scaling& scaling)
+{
+  const std::size_t n = mesh.points.size();
+  if(mesh.tetrahedra.empty()) refuse_mesh("the mesh has no tetrahedra");
+  if(mesh.subdomain.size() != mesh.tetrahedra.size())
+    refuse_mesh(std::to_string(mesh.subdomain.size()) + " subdomain tags for " +
+                std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
+  if(!mesh.size.empty() && mesh.size.size() != n)
+    refuse_mesh(std::to_string(mesh.size.size()) + " sizes for " + std::to_string(n) + " points (give one per point, or none)");
+  if(n >= std::size_t(ghost_vertex)) refuse_mesh("too many points");
+  std::vector<std::array<double, 3>> points(n);
+  for(std::size_t i = 0; i < n; ++i)
+    for(int a = 0; a < 3; ++a) points[i][a] = scaling.to_unit(mesh.points[i][a]);
+  std::vector<std::array<Vertex_id, 4>> tets(mesh.tetrahedra.size());
+  for(std::size_t t = 0; t < tets.size(); ++t) {
+    for(int i = 0; i < 4; ++i) {
+      if(mesh.tetrahedra[t][i] >= n)
+        refuse_mesh("tetrahedron #" + std::to_string(t) + " refers to point #" + std::to_string(mesh.tetrahedra[t][i]) +
+                    ", past the " + std::to_string(n) + " points");
+      tets[t][i] = mesh.tetrahedra[t][i];
+    }
+    if(mesh.subdomain[t] < 1) refuse_mesh("tetrahedron #" + std::to_string(t) + " has subdomain " +
+                                          std::to_string(mesh.subdomain[t]) + " (subdomains are numbered from 1)");
+    if(orientation(points[tets[t][0]].data(), points[tets[t][1]].data(), points[tets[t][2]].data(),
+                   points[tets[t][3]].data()) <= 0)
+      refuse_mesh("tetrahedron #" + std::to_string(t) + " is not positively oriented (or is flat)");
+  }
+  // Facets: each in one tetrahedron (boundary) or two; boundary edges: each
+  // in exactly two boundary facets (a closed boundary, no two volumes
+  // meeting at an edge only).
+  std::vector<Triangle_key> facets;
+  facets.reserve(4 * tets.size());
+  for(const auto& t : tets)
+    for(int f = 0; f < 4; ++f) facets.push_back(Triangle_key::of(t[facet_vertex[f][0]], t[facet_vertex[f][1]], t[facet_vertex[f][2]]));
+  std::sort(facets.begin(), facets.end());
+  std::vector<std::pair<Vertex_id, Vertex_id>> boundary_edges;
+  for(std::size_t k = 0; k < facets.size();) {
+    std::size_t run = 1;
+    while(k + run < facets.size() && facets[k + run] == facets[k]) ++run;
+    if(run > 2)
+      refuse_mesh("the facet (" + std::to_string(facets[k].v[0]) + ", " + std::to_string(facets[k].v[1]) + ", " +
+                  std::to_string(facets[k].v[2]) + ") is in " + std::to_string(run) + " tetrahedra");
+    if(run == 1)
+      for(int i = 0; i < 3; ++i) {
+        const Vertex_id a = facets[k].v[i], b = facets[k].v[(i + 1) % 3];
+        boundary_edges.push_back({std::min(a, b), std::max(a, b)});
+      }
+    k += run;
+  }
+  std::sort(boundary_edges.begin(), boundary_edges.end());
+  for(std::size_t k = 0; k < boundary_edges.size();) {
+    std::size_t run = 1;
+    while(k + run < boundary_edges.size() && boundary_edges[k + run] == boundary_edges[k]) ++run;
+    if(run != 2)
+      refuse_mesh("the boundary edge (" + std::to_string(boundary_edges[k].first) + ", " +
+                  std::to_string(boundary_edges[k].second) + ") is in " + std::to_string(run) +
+                  " boundary facets, not two");
+    k += run;
+  }
+  std::vector<Triangle_key> listed;
+  for(std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+    const auto& tri = mesh.triangles[k];
+    for(std::uint32_t v : tri)
+      if(v >= n) refuse_mesh("triangle #" + std::to_string(k) + " refers to point #" + std::to_string(v) + ", past the " +
+                             std::to_string(n) + " points");
+    listed.push_back(Triangle_key::of(tri[0], tri[1], tri[2]));
+    if(!std::binary_search(facets.begin(), facets.end(), listed.back()))
+      refuse_mesh("triangle #" + std::to_string(k) + " is not a facet of the tetrahedra");
+  }
+  std::sort(listed.begin(), listed.end());
+
+  Constrained_mesh cm;
+  cm.mesh = flat_storage_from_tetrahedra(points, tets);
+  set_box(points, cm);
+  cm.fit_slot_arrays();
+  int most = 0;
+  for(Tet_id t = 0; t < tets.size(); ++t) {
+    cm.subdomain[t] = mesh.subdomain[t];
+    most = std::max(most, mesh.subdomain[t]);
+  }
+  cm.number_of_subdomains = std::max(most, mesh.number_of_subdomains);
+  const Flat_storage& m = cm.mesh;
+  for(Tet_id t = 0; t < m.number_of_slots(); ++t)
+    for(int f = 0; f < 4; ++f)
+      if(cm.subdomain[t] != cm.subdomain[m.neighbor(t, f)] ||
+         std::binary_search(listed.begin(), listed.end(), facet_key(m, t, f)))
+        cm.constrained[t] |= std::uint8_t(1u << f);
+  cm.size.assign(n, 0.0);
+  for(std::size_t i = 0; i < mesh.size.size(); ++i) cm.size[i] = scaling.to_unit(mesh.size[i]);
+  return cm;
+}
+
+} // namespace mesher_detail
+
+// Improves a tetrahedral mesh in place, as the mesher's last step does
+// (options: quality_threshold, max_improvement_passes, threads,
+// improvement_adds_points): its boundary, its triangles and the facets
+// between subdomains are kept exactly, points on them do not move, every
+// tetrahedron keeps its subdomain; interior points may move and, unless
+// improvement_adds_points is off, interior points may be added (after the
+// given ones, with the mean size of their neighbours when sizes are given).
+// The tetrahedra come back in a new order.  Throws std::invalid_argument,
+// naming the defect, for a mesh it cannot take (the mesh is left as it was):
+// tetrahedra not positively oriented, indices out of range, a facet in
+// three tetrahedra, a boundary that is not closed, triangles that are not
+// facets of the mesh.
+inline Improvement_statistics improve_mesh(Tetrahedral_mesh& mesh, const Mesher_options& options = Mesher_options())
+{
+  using namespace mesher_detail;
+  if(!(options.quality_threshold > 0 && options.quality_threshold <= 1))
+    refuse_mesh("quality_threshold must be in (0, 1]");
+  for(std::size_t i = 0; i < mesh.points.size(); ++i)
+    for(double x : mesh.points[i])
+      if(!std::isfinite(x)) refuse_mesh("point #" + std::to_string(i) + " has a coordinate that is not finite");
+  Surface_soup extent;
+  extent.points = mesh.points;
+  const Unit_scaling scaling(extent); // throws Invalid_surface (an invalid_argument) past a double's range
+  Constrained_mesh cm = constrained_mesh_of(mesh, scaling);
+  Improvement_options improvement;
+  improvement.quality_threshold = options.quality_threshold;
+  improvement.max_passes = options.max_improvement_passes;
+  improvement.threads = std::max(1, options.threads);
+  improvement.add_steiner_points = options.improvement_adds_points;
+  const Improvement_statistics stats = Fast_Delaunay_triangulation_3_internal::mesher::improve_mesh(cm, improvement);
+  scaling.unscale(cm);
+  const Flat_storage& m = cm.mesh;
+  Tetrahedral_mesh out;
+  out.points.resize(m.vertices.size());
+  for(Vertex_id v = 0; v < m.vertices.size(); ++v) out.points[v] = {m.point(v)[0], m.point(v)[1], m.point(v)[2]};
+  if(!mesh.size.empty()) out.size = cm.size;
+  for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+    if(!m.is_live(t) || m.is_ghost(t) || cm.subdomain[t] <= 0) continue;
+    const Vertex_id* tv = m.vertex_ids(t);
+    out.tetrahedra.push_back({tv[0], tv[1], tv[2], tv[3]});
+    out.subdomain.push_back(cm.subdomain[t]);
+  }
+  out.triangles = std::move(mesh.triangles);
+  out.surface = std::move(mesh.surface);
+  out.number_of_subdomains = cm.number_of_subdomains;
+  out.number_of_surfaces = mesh.number_of_surfaces;
+  mesh = std::move(out);
+  return stats;
 }
 
 // Writes .mesh (Medit), .vtu (VTK, raw binary appended) or .msh (Gmsh 4.1, ASCII), by extension.

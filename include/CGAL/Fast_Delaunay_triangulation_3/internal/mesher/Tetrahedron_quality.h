@@ -63,8 +63,9 @@ inline double gamma_quality(const double* a, const double* b, const double* c, c
   return 6 * D * std::abs(D) / denominator;
 }
 
-// Angle at edge (a, b) between facets (a, b, c) and (a, b, d), in degrees.
-inline double dihedral_degrees(const double* a, const double* b, const double* c, const double* d)
+// The cosine of the angle at edge (a, b) between facets (a, b, c) and
+// (a, b, d); 1 (a zero angle) for a degenerate facet.
+inline double dihedral_cosine(const double* a, const double* b, const double* c, const double* d)
 {
   using namespace quality_detail;
   double e[3], u[3], v[3];
@@ -77,8 +78,16 @@ inline double dihedral_degrees(const double* a, const double* b, const double* c
   cross(e, u, n1);
   cross(e, v, n2);
   const double l = norm(n1) * norm(n2);
-  if(!(l > 0)) return 0;
-  return std::acos(std::max(-1.0, std::min(1.0, dot(n1, n2) / l))) * 180.0 / 3.14159265358979323846;
+  if(!(l > 0)) return 1;
+  return std::max(-1.0, std::min(1.0, dot(n1, n2) / l));
+}
+
+inline double degrees_of_cosine(double cosine) { return std::acos(cosine) * 180.0 / 3.14159265358979323846; }
+
+// Angle at edge (a, b) between facets (a, b, c) and (a, b, d), in degrees.
+inline double dihedral_degrees(const double* a, const double* b, const double* c, const double* d)
+{
+  return degrees_of_cosine(dihedral_cosine(a, b, c, d));
 }
 
 struct Dihedral_range
@@ -86,16 +95,22 @@ struct Dihedral_range
   double smallest = 180, largest = 0;
 };
 
+// The six edges of a tetrahedron, each with the two other corners.
+static const int dihedral_edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                         {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+
+// Two arc cosines per tetrahedron, not six: the angle falls as the cosine rises.
 inline Dihedral_range dihedral_range(const double* const w[4])
 {
-  static const int edge_of[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
-                                    {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  Dihedral_range r;
-  for(const auto& e : edge_of) {
-    const double angle = dihedral_degrees(w[e[0]], w[e[1]], w[e[2]], w[e[3]]);
-    r.smallest = std::min(r.smallest, angle);
-    r.largest = std::max(r.largest, angle);
+  double highest = -1, lowest = 1;
+  for(const auto& e : dihedral_edges) {
+    const double c = dihedral_cosine(w[e[0]], w[e[1]], w[e[2]], w[e[3]]);
+    highest = std::max(highest, c);
+    lowest = std::min(lowest, c);
   }
+  Dihedral_range r;
+  r.smallest = degrees_of_cosine(highest);
+  r.largest = degrees_of_cosine(lowest);
   return r;
 }
 
