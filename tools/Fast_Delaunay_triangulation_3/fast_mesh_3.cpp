@@ -1,8 +1,8 @@
 // Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// fast_mesh_3 INPUT... -o OUTPUT [--size H] [--threads K] [--optimize 0|1]
-//             [--quality-threshold G] [--quiet]
+// fast_mesh_3 INPUT... -o OUTPUT [--size H] [--size-field FILE] [--threads K]
+//             [--optimize 0|1] [--quality-threshold G] [--quiet]
 //
 // Meshes the volumes bounded by the closed surfaces of the input files (OFF,
 // STL, OBJ, PLY) with the Delaunay-refinement mesher of the paper's §4,
@@ -28,10 +28,14 @@ namespace {
 int usage(const char* program)
 {
   std::cerr << "usage: " << program
-            << " INPUT... -o OUTPUT [--size H] [--threads K] [--optimize 0|1] [--quality-threshold G] [--quiet]\n"
+            << " INPUT... -o OUTPUT [--size H] [--size-field FILE] [--threads K] [--optimize 0|1]\n"
+            << "       [--quality-threshold G] [--quiet]\n"
             << "  INPUT   closed triangulated surfaces (.off .stl .obj .ply); nested surfaces give several subdomains\n"
             << "  OUTPUT  .mesh (Medit), .vtu (VTK) or .msh (Gmsh 4.1)\n"
             << "  --size H     maximum mesh size (default: the surface's edge lengths, interpolated)\n"
+            << "  --size-field FILE  sizes from a text file, one entry a line ('#' comments):\n"
+            << "               'subdomain S H' caps h in subdomain S; 'X Y Z H' is a background point whose\n"
+            << "               size H caps h where it is the nearest one\n"
             << "  --threads K  Moore partitions (threads) of the empty mesh and of every refinement batch;\n"
             << "               the same input and K give the same mesh\n"
             << "  --optimize 0|1  improve the tetrahedra under the threshold after refinement (default 1)\n"
@@ -45,7 +49,7 @@ int usage(const char* program)
 int main(int argc, char** argv)
 {
   std::vector<std::string> inputs;
-  std::string output;
+  std::string output, size_field;
   CGAL::Fast_mesher_3::Mesher_options options;
   bool quiet = false;
   for(int i = 1; i < argc; ++i) {
@@ -60,6 +64,7 @@ int main(int argc, char** argv)
     try {
       if(arg == "-o" || arg == "--output") output = value();
       else if(arg == "--size") options.maximum_size = std::stod(value());
+      else if(arg == "--size-field") size_field = value();
       else if(arg == "--threads") options.threads = std::stoi(value());
       else if(arg == "--optimize") {
         const std::string v = value();
@@ -82,6 +87,14 @@ int main(int argc, char** argv)
      !(options.quality_threshold > 0 && options.quality_threshold < 1)) {
     std::cerr << "fast_mesh_3: --size must be positive, --threads at least 1 and --quality-threshold in (0, 1)\n";
     return 2;
+  }
+  if(!size_field.empty()) {
+    try {
+      CGAL::Fast_mesher_3::read_size_field(size_field, options);
+    } catch(const std::exception& e) {
+      std::cerr << "fast_mesh_3: " << e.what() << "\n";
+      return 1;
+    }
   }
   fdt3_tools::Progress_bar bar(stdout, !quiet);
   if(bar.enabled())

@@ -28,7 +28,8 @@
 //
 // Also as CGAL's Mesh_complex_3_in_triangulation_3: mesh_surfaces_to_c3t3.
 //
-// Not yet: no user size function; surfaces may not touch.
+// Sizes: maximum_size, subdomain_sizes, size_function, or a size-field
+// file (read_size_field).  Not yet: surfaces may not touch.
 
 #ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_TETRAHEDRAL_MESHER_H
@@ -40,6 +41,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Mesh_writers.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Quality_report.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Refinement.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Size_field_file.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Sizing.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Surface_input.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
@@ -52,6 +54,7 @@
 #include <functional>
 #include <limits>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -66,6 +69,17 @@ struct Mesher_options
 {
   // Global maximum of h; the default size is the surface's, interpolated.
   double maximum_size = std::numeric_limits<double>::infinity();
+  // The user's size, h(x, y, z) in the input's coordinates: where it is
+  // smaller than the surface's, it is the size (refinement and the
+  // improvement's Steiner points follow it; the surface itself is never
+  // split, so near a coarse surface the tetrahedra stay coarse).  Called
+  // from several threads at once; it must return a positive finite size
+  // (else the mesher throws std::invalid_argument, or rethrows what it
+  // threw).  read_size_field() makes one from a file.
+  std::function<double(double, double, double)> size_function;
+  // subdomain_sizes[s - 1]: the largest h in subdomain s (numbered as in
+  // Tetrahedral_mesh::subdomain); 0 or absent: no cap there.
+  std::vector<double> subdomain_sizes;
   // Moore partitions (one per thread) of the empty mesh and of every
   // refinement batch; 1 is sequential.  The mesh depends on this number
   // only, not on the threads that run the partitions: the same input and
@@ -127,6 +141,36 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The user's bounds of h, at the unit scale of `scaling`.
+inline void set_size_bounds(const Mesher_options& options, const Unit_scaling& scaling, Size_field& field)
+{
+  if(!(options.maximum_size > 0)) throw std::invalid_argument("Tetrahedral_mesher: maximum_size must be positive");
+  field.set_cap(scaling.to_unit(options.maximum_size));
+  std::vector<double> caps(options.subdomain_sizes.size() + 1, 0.0);
+  for(std::size_t s = 0; s < options.subdomain_sizes.size(); ++s) {
+    const double h = options.subdomain_sizes[s];
+    if(!(h >= 0) || std::isinf(h))
+      throw std::invalid_argument("Tetrahedral_mesher: subdomain_sizes[" + std::to_string(s) +
+                                  "] (subdomain " + std::to_string(s + 1) + ") must be a finite size, or 0 for none");
+    caps[s + 1] = scaling.to_unit(h);
+  }
+  field.set_subdomain_caps(std::move(caps));
+  if(options.size_function) {
+    const std::function<double(double, double, double)> h = options.size_function;
+    field.set_function([h, scaling](const double* p) {
+      const double x = scaling.from_unit(p[0]), y = scaling.from_unit(p[1]), z = scaling.from_unit(p[2]);
+      const double value = h(x, y, z);
+      if(!(value > 0) || std::isinf(value)) {
+        std::ostringstream s;
+        s << "Tetrahedral_mesher: size_function(" << x << ", " << y << ", " << z << ") returned " << value
+          << ", not a positive finite size";
+        throw std::invalid_argument(s.str());
+      }
+      return scaling.to_unit(value);
+    });
+  }
+}
+
 // `on_mesh(cm)` sees the final constrained mesh before it is extracted.
 // `soup` is at the unit scale of `scaling` (Unit_scaling.h); the mesh
 // handed on and returned is at the input's.
@@ -151,7 +195,9 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
   Clock::time_point t1 = Clock::now();
   flag_constrained_facets(soup, cm);
   colour_volumes(cm);
-  surface_sizes(soup, scaling.to_unit(options.maximum_size), cm);
+  set_size_bounds(options, scaling, cm.size);
+  surface_sizes(soup, cm);
+  cm.size.rethrow_user_error();
   stats.colouring_seconds = seconds_since(t1);
 
   t1 = Clock::now();
@@ -177,6 +223,7 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
     for(const auto& attempt : pass.attempts) stats.partitioned_attempts += attempt.partitions > 1 ? 1 : 0;
   }
   stats.refinement_seconds = seconds_since(t1);
+  cm.size.rethrow_user_error();
   if(options.optimize) {
     Improvement_options improvement;
     improvement.quality_threshold = options.quality_threshold;
@@ -185,6 +232,7 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
     improvement.threads = std::max(1, options.threads);
     stats.improvement = improve_mesh(cm, improvement);
     stats.improvement_seconds = stats.improvement.seconds;
+    cm.size.rethrow_user_error();
   }
   scaling.unscale(cm);
   on_mesh(static_cast<const Constrained_mesh&>(cm));
@@ -405,7 +453,7 @@ inline Improvement_statistics improve_mesh(Tetrahedral_mesh& mesh, const Mesher_
   Tetrahedral_mesh out;
   out.points.resize(m.vertices.size());
   for(Vertex_id v = 0; v < m.vertices.size(); ++v) out.points[v] = {m.point(v)[0], m.point(v)[1], m.point(v)[2]};
-  if(!mesh.size.empty()) out.size = cm.size;
+  if(!mesh.size.empty()) out.size = cm.size.values();
   for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
     if(!m.is_live(t) || m.is_ghost(t) || cm.subdomain[t] <= 0) continue;
     const Vertex_id* tv = m.vertex_ids(t);
@@ -418,6 +466,31 @@ inline Improvement_statistics improve_mesh(Tetrahedral_mesh& mesh, const Mesher_
   out.number_of_surfaces = mesh.number_of_surfaces;
   mesh = std::move(out);
   return stats;
+}
+
+// Reads a size field file into `options` (the format is in
+// internal/mesher/Size_field_file.h: lines 'subdomain S H' and 'X Y Z H'):
+// its subdomain caps replace options.subdomain_sizes, and its background
+// points, if any, give a size function (the size of the nearest one),
+// combined with options.size_function by the smaller of the two.  Throws
+// std::invalid_argument naming the file and the line of a defect; options
+// are left as they were then.
+inline void read_size_field(const std::string& path, Mesher_options& options)
+{
+  using namespace Fast_Delaunay_triangulation_3_internal::mesher;
+  Size_field_entries entries = read_size_field_entries(path);
+  std::function<double(double, double, double)> nearest;
+  if(!entries.points.empty()) nearest = Nearest_point_size(entries.points, std::move(entries.sizes));
+  options.subdomain_sizes = std::move(entries.subdomain_sizes);
+  if(!nearest) return;
+  if(options.size_function) {
+    const std::function<double(double, double, double)> given = options.size_function;
+    options.size_function = [given, nearest](double x, double y, double z) {
+      return std::min(given(x, y, z), nearest(x, y, z));
+    };
+  } else {
+    options.size_function = nearest;
+  }
 }
 
 // Writes .mesh (Medit), .vtu (VTK, raw binary appended) or .msh (Gmsh 4.1, ASCII), by extension.

@@ -18,6 +18,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Size_field.h>
 
 #include <algorithm>
 #include <array>
@@ -101,7 +102,7 @@ struct Constrained_mesh
   Flat_storage mesh;
   std::vector<int> subdomain;            // per slot
   std::vector<std::uint8_t> constrained; // per slot, bit f: facet f is an input triangle
-  std::vector<double> size;              // per vertex: h
+  Size_field size;                       // h: per vertex, and the user's bounds
   std::vector<Vertex_id> vertex_of_input; // surface point -> vertex id
   // The input's bounding box, and filters valid for points inside it.
   double box_lo[3] = {0, 0, 0}, box_hi[3] = {0, 0, 0};

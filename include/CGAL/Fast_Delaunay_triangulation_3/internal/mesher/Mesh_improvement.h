@@ -946,6 +946,8 @@ private:
     // but they keep the vertices around active pass after pass.
     if(!(best_quality > 1.01 * worst) || !ball_positive(w.ball_corners, v, best)) return Outcome::unchanged;
     std::copy(best, best + 3, m.vertices[v].xyz);
+    // h belongs to the position: the user's bounds at the new one.
+    cm_.size[v] = cm_.size.bounded(cm_.size[v], best, cm_.subdomain[w.ball.front()]);
     mark_changed(w.ball_corners);
     ++w.stats.relocations;
     return Outcome::improved;
@@ -1072,7 +1074,7 @@ private:
     std::copy(best_point, best_point + 3, record.xyz);
     record.scratch = 0;
     m.vertices.push_back(record);
-    cm_.size.push_back(best_size);
+    cm_.size.push_back(cm_.size.bounded(best_size, best_point, cm_.subdomain[t]));
     on_surface_.push_back(0);
     incident_.push_back(no_tet);
     partition_of_vertex_.push_back(w.partition);

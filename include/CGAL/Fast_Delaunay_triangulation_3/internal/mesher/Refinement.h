@@ -339,7 +339,10 @@ private:
       if(!m.is_live(t) || cm_.subdomain[t] <= 0) continue;
       const Vertex_id* tv = m.vertex_ids(t);
       const double* w[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
-      const double h_mean = (cm_.size[tv[0]] + cm_.size[tv[1]] + cm_.size[tv[2]] + cm_.size[tv[3]]) / 4;
+      // A first look, before the circumcentre's own h: the vertices' mean,
+      // within the caps (a subdomain's cap is below its surface's sizes).
+      const double h_mean =
+          cm_.size.capped((cm_.size[tv[0]] + cm_.size[tv[1]] + cm_.size[tv[2]] + cm_.size[tv[3]]) / 4, cm_.subdomain[t]);
       Refinement_point r;
       if(!circumcentre(w[0], w[1], w[2], w[3], r.p)) continue;
       const double radius = distance(r.p, w[0]);

@@ -7,8 +7,9 @@
 // of the nearest surface vertex; a refinement point gets the linear
 // interpolation, inside the tetrahedron that contains it, of the sizes of
 // that tetrahedron's vertices, so that h stays the piecewise linear
-// interpolation over the initial mesh.  Every size is capped by a global
-// maximum.
+// interpolation over the initial mesh.  Every size is clipped where it is
+// made to the bounds the user set in the field (Size_field.h): a global
+// cap, a cap per subdomain, a function of the position.
 
 #ifndef CGAL_FDT3_INTERNAL_MESHER_SIZING_H
 #define CGAL_FDT3_INTERNAL_MESHER_SIZING_H
@@ -30,9 +31,11 @@ inline double distance(const double* p, const double* q)
   return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
 }
 
-// Fills cm.size for the vertices of the recovered mesh.
-inline void surface_sizes(const Surface_soup& soup, double maximum_size, Constrained_mesh& cm)
+// Fills cm.size for the vertices of the recovered, coloured mesh; its
+// bounds are set.
+inline void surface_sizes(const Surface_soup& soup, Constrained_mesh& cm)
 {
+  const double maximum_size = cm.size.cap();
   std::vector<double> sum(soup.points.size(), 0.0);
   std::vector<int> count(soup.points.size(), 0);
   // Each edge is used by two triangles: counting it from both keeps the average.
@@ -58,10 +61,15 @@ inline void surface_sizes(const Surface_soup& soup, double maximum_size, Constra
       }
     }
   }
+  // The user's function bounds these sizes too; a subdomain's cap does
+  // not (a surface vertex is on the side of every subdomain it bounds, and
+  // a cap inside one would otherwise refine its neighbours near the
+  // surface): it bounds the sizes interpolated inside its subdomain.
+  for(Vertex_id v = 0; v < m.vertices.size(); ++v) cm.size[v] = cm.size.bounded(cm.size[v], m.point(v), 0);
 }
 
-// h at p, inside (or on) finite tetrahedron t: barycentric interpolation.
-inline double interpolated_size(const Constrained_mesh& cm, Tet_id t, const double* p)
+// The piecewise linear h at p, inside (or on) finite tetrahedron t.
+inline double linear_size(const Constrained_mesh& cm, Tet_id t, const double* p)
 {
   const Flat_storage& m = cm.mesh;
   const Vertex_id* tv = m.vertex_ids(t);
@@ -77,6 +85,13 @@ inline double interpolated_size(const Constrained_mesh& cm, Tet_id t, const doub
   }
   if(!(weight_sum > 0)) return (cm.size[tv[0]] + cm.size[tv[1]] + cm.size[tv[2]] + cm.size[tv[3]]) / 4;
   return h / weight_sum;
+}
+
+// h at p, inside (or on) finite tetrahedron t: barycentric interpolation,
+// clipped to the bounds in t's subdomain.
+inline double interpolated_size(const Constrained_mesh& cm, Tet_id t, const double* p)
+{
+  return cm.size.bounded(linear_size(cm, t, p), p, cm.subdomain[t]);
 }
 
 } // namespace mesher

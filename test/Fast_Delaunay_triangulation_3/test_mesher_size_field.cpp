@@ -1,0 +1,210 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The user's size: a function h(x, y, z), a cap per subdomain, a size-field
+// file (subdomain caps and background points).  Refinement follows them
+// where they are below the surface's size and leaves the rest alone; a
+// function that returns no size, or throws, is reported on the caller's
+// thread, also from the partitions' threads; a malformed file is refused
+// with its line, the options left as they were.
+
+#include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
+
+#include <gtest/gtest.h>
+
+#include "mesher_checks.h"
+#include "mesher_shapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace test_mesher_size_field {
+
+using namespace CGAL::Fast_mesher_3;
+
+// Tetrahedra whose centroid has x above / below 0.
+std::array<std::size_t, 2> tetrahedra_by_side(const Tetrahedral_mesh& mesh)
+{
+  std::array<std::size_t, 2> n = {0, 0};
+  for(const auto& t : mesh.tetrahedra) {
+    double x = 0;
+    for(std::uint32_t v : t) x += mesh.points[v][0] / 4;
+    ++n[x > 0 ? 0 : 1];
+  }
+  return n;
+}
+
+TEST(SizeField, FunctionRefinesWhereItIsBelowTheSurfaceSize)
+{
+  const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 40, 16);
+  for(int threads : {1, 2}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    Mesher_options plain_options;
+    plain_options.threads = threads;
+    Mesher_options fine = plain_options;
+    fine.size_function = [](double x, double, double) { return x > 0 ? 0.04 : 1e3; };
+    const Tetrahedral_mesh plain = mesh_surfaces(s.points, s.triangles, plain_options);
+    const Tetrahedral_mesh mesh = mesh_surfaces(s.points, s.triangles, fine);
+    const auto n_plain = tetrahedra_by_side(plain), n = tetrahedra_by_side(mesh);
+    EXPECT_GT(n[0], 3 * n_plain[0]); // the half where h is 0.04
+    // The other half: refined only in the band near x = 0, where the
+    // sizes blend.
+    EXPECT_LT(n[1], 2 * n_plain[1]);
+    EXPECT_LT(n[1], n[0] / 2);
+    // Every point's size is the function's where it is smaller.
+    for(std::size_t v = 0; v < mesh.points.size(); ++v) {
+      if(mesh.points[v][0] > 0) {
+        EXPECT_LE(mesh.size[v], 0.04 * (1 + 1e-12)) << v;
+      }
+    }
+    mesher_checks::expect_all_positive(mesh);
+    mesher_checks::expect_boundary_is_input(mesh, s);
+    EXPECT_NEAR(mesher_checks::volume_of_subdomain(mesh, 1), mesher_checks::volume_of_subdomain(plain, 1),
+                1e-9 * mesher_checks::volume_of_subdomain(plain, 1));
+  }
+}
+
+TEST(SizeField, CapPerSubdomain)
+{
+  const mesher_shapes::Surface s =
+      mesher_shapes::combine(mesher_shapes::icosphere(2, 1.0), mesher_shapes::icosphere(1, 0.4, {0.02, 0.01, 0}));
+  const Tetrahedral_mesh plain = mesh_surfaces(s.points, s.triangles);
+  ASSERT_EQ(plain.number_of_subdomains, 2);
+  const int inner =
+      mesher_checks::volume_of_subdomain(plain, 1) < mesher_checks::volume_of_subdomain(plain, 2) ? 1 : 2;
+  auto count = [](const Tetrahedral_mesh& m, int subdomain) {
+    return static_cast<std::size_t>(std::count(m.subdomain.begin(), m.subdomain.end(), subdomain));
+  };
+  Mesher_options options;
+  options.subdomain_sizes.assign(2, 0.0);
+  options.subdomain_sizes[inner - 1] = 0.05;
+  const Tetrahedral_mesh capped = mesh_surfaces(s.points, s.triangles, options);
+  ASSERT_EQ(capped.number_of_subdomains, 2);
+  const int inner_capped =
+      mesher_checks::volume_of_subdomain(capped, 1) < mesher_checks::volume_of_subdomain(capped, 2) ? 1 : 2;
+  EXPECT_GT(count(capped, inner_capped), 5 * count(plain, inner));
+  EXPECT_LT(count(capped, 3 - inner_capped), count(plain, 3 - inner) * 3 / 2);
+  // Inside the capped subdomain, every point off the surface has h <= the cap.
+  std::vector<char> on_surface(capped.points.size(), 0);
+  for(const auto& tri : capped.triangles)
+    for(std::uint32_t v : tri) on_surface[v] = 1;
+  for(std::size_t t = 0; t < capped.tetrahedra.size(); ++t) {
+    if(capped.subdomain[t] != inner_capped) continue;
+    for(std::uint32_t v : capped.tetrahedra[t]) {
+      if(!on_surface[v]) {
+        EXPECT_LE(capped.size[v], 0.05 * (1 + 1e-12));
+      }
+    }
+  }
+  mesher_checks::expect_boundary_is_input(capped, s);
+
+  Mesher_options negative;
+  negative.subdomain_sizes = {-1};
+  EXPECT_THROW(mesh_surfaces(s.points, s.triangles, negative), std::invalid_argument);
+}
+
+TEST(SizeField, AFunctionWithoutASizeIsReported)
+{
+  const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 20, 8);
+  for(int threads : {1, 2}) {
+    Mesher_options options;
+    options.threads = threads;
+    options.size_function = [](double x, double, double) {
+      return x > 0.5 ? std::numeric_limits<double>::quiet_NaN() : 0.1;
+    };
+    try {
+      mesh_surfaces(s.points, s.triangles, options);
+      ADD_FAILURE() << "a NaN size was accepted";
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("size_function("), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("not a positive finite size"), std::string::npos) << e.what();
+    }
+    options.size_function = [](double, double, double) { return -1.0; };
+    EXPECT_THROW(mesh_surfaces(s.points, s.triangles, options), std::invalid_argument);
+    options.size_function = [](double x, double, double) -> double {
+      if(x < -0.5) throw std::runtime_error("the user's own error");
+      return 0.2;
+    };
+    try {
+      mesh_surfaces(s.points, s.triangles, options);
+      ADD_FAILURE() << "the function's exception was lost";
+    } catch(const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "the user's own error");
+    }
+  }
+}
+
+std::string write_file(const std::string& name, const std::string& text)
+{
+  const std::string path = testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(SizeField, FileWithSubdomainsAndBackgroundPoints)
+{
+  const std::string path = write_file("fdt3_size_field.txt",
+                                      "# a comment\n"
+                                      "subdomain 2 0.25   # the second volume\n"
+                                      "\n"
+                                      "0 0 0 0.5\n"
+                                      "1 0 0 0.125\n");
+  Mesher_options options;
+  read_size_field(path, options);
+  ASSERT_EQ(options.subdomain_sizes.size(), 2u);
+  EXPECT_EQ(options.subdomain_sizes[0], 0.0);
+  EXPECT_EQ(options.subdomain_sizes[1], 0.25);
+  ASSERT_TRUE(static_cast<bool>(options.size_function));
+  EXPECT_EQ(options.size_function(0.1, 0, 0), 0.5);   // nearest: the origin
+  EXPECT_EQ(options.size_function(0.9, 0.2, 0), 0.125);
+  // Combined with a function already given: the smaller.
+  Mesher_options both;
+  both.size_function = [](double, double, double) { return 0.3; };
+  read_size_field(path, both);
+  EXPECT_EQ(both.size_function(0.1, 0, 0), 0.3);
+  EXPECT_EQ(both.size_function(0.9, 0, 0), 0.125);
+
+  // A mesh with it: the background points cap h near them.
+  const mesher_shapes::Surface s = mesher_shapes::cube(0, 1);
+  const Tetrahedral_mesh plain = mesh_surfaces(s.points, s.triangles);
+  Mesher_options fine;
+  read_size_field(write_file("fdt3_size_field_fine.txt", "0.5 0.5 0.5 0.1\n"), fine);
+  const Tetrahedral_mesh mesh = mesh_surfaces(s.points, s.triangles, fine);
+  EXPECT_GT(mesh.tetrahedra.size(), 10 * plain.tetrahedra.size());
+  mesher_checks::expect_boundary_is_input(mesh, s);
+}
+
+TEST(SizeField, MalformedFilesAreRefusedWithTheirLine)
+{
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"0 0 0\n", "line 1: expected 'X Y Z H' or 'subdomain S H', found 3 words"},
+      {"# ok\n0 0 0 1\n0 0 x 1\n", "line 3: 'x' is not a finite coordinate"},
+      {"0 0 0 -1\n", "line 1: '-1' is not a positive finite size"},
+      {"0 0 0 1e400\n", "line 1: '1e400' is not a positive finite size"},
+      {"subdomain 0 1\n", "line 1: '0' is not a subdomain number"},
+      {"subdomain 1\n", "line 1: 'subdomain S H' takes two numbers, not 1"},
+      {"subdomain 1 0.5\nsubdomain 1 0.25\n", "line 2: subdomain 1 is given twice"},
+      {"# nothing\n\n", "no entries"},
+  };
+  for(const auto& c : cases) {
+    Mesher_options options;
+    options.subdomain_sizes = {7};
+    try {
+      read_size_field(write_file("fdt3_bad_size_field.txt", c.first), options);
+      ADD_FAILURE() << "accepted: " << c.first;
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(c.second), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(options.subdomain_sizes, std::vector<double>{7});
+    EXPECT_FALSE(static_cast<bool>(options.size_function));
+  }
+  Mesher_options options;
+  EXPECT_THROW(read_size_field(testing::TempDir() + "fdt3_no_such_file.txt", options), std::invalid_argument);
+}
+
+} // namespace test_mesher_size_field
