@@ -65,6 +65,29 @@ inline mi::Constrained_mesh constrained_mesh(const std::vector<std::array<double
   return constrained_mesh(points, tets, [](Tet_id) { return 1; });
 }
 
+// CGAL's Delaunay triangulation of `input` as a constrained mesh, each cell
+// in subdomain `subdomain_of(x of its centroid)`.
+template <class Subdomain_of_x>
+mi::Constrained_mesh delaunay_mesh(const std::vector<K::Point_3>& input, Subdomain_of_x subdomain_of)
+{
+  CGAL::Delaunay_triangulation_3<K> dt(input.begin(), input.end());
+  std::vector<std::array<double, 3>> points;
+  std::map<CGAL::Delaunay_triangulation_3<K>::Vertex_handle, Vertex_id> id;
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    id[v] = static_cast<Vertex_id>(points.size());
+    points.push_back({v->point().x(), v->point().y(), v->point().z()});
+  }
+  std::vector<std::array<Vertex_id, 4>> tets;
+  std::vector<int> subdomain;
+  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+    tets.push_back({id[c->vertex(0)], id[c->vertex(1)], id[c->vertex(2)], id[c->vertex(3)]});
+    double x = 0;
+    for(int i = 0; i < 4; ++i) x += c->vertex(i)->point().x() / 4;
+    subdomain.push_back(subdomain_of(x));
+  }
+  return constrained_mesh(points, tets, [&](Tet_id t) { return subdomain[t]; });
+}
+
 // CGAL's Delaunay triangulation of the centres of a k x k x k grid of the
 // unit cube, each moved at random by up to 0.35 of the spacing, and the
 // grid's nodes on the cube's faces: well-spaced points, whose Delaunay
@@ -84,22 +107,7 @@ inline mi::Constrained_mesh random_cube_mesh(int k, unsigned seed, bool two_subd
   for(int i = 0; i < k; ++i)
     for(int j = 0; j < k; ++j)
       for(int l = 0; l < k; ++l) input.emplace_back(jittered(i), jittered(j), jittered(l));
-  CGAL::Delaunay_triangulation_3<K> dt(input.begin(), input.end());
-  std::vector<std::array<double, 3>> points;
-  std::map<CGAL::Delaunay_triangulation_3<K>::Vertex_handle, Vertex_id> id;
-  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-    id[v] = static_cast<Vertex_id>(points.size());
-    points.push_back({v->point().x(), v->point().y(), v->point().z()});
-  }
-  std::vector<std::array<Vertex_id, 4>> tets;
-  std::vector<int> subdomain;
-  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-    tets.push_back({id[c->vertex(0)], id[c->vertex(1)], id[c->vertex(2)], id[c->vertex(3)]});
-    double x = 0;
-    for(int i = 0; i < 4; ++i) x += c->vertex(i)->point().x() / 4;
-    subdomain.push_back(two_subdomains && x < 0.5 ? 2 : 1);
-  }
-  return constrained_mesh(points, tets, [&](Tet_id t) { return subdomain[t]; });
+  return delaunay_mesh(input, [two_subdomains](double x) { return two_subdomains && x < 0.5 ? 2 : 1; });
 }
 
 // CGAL's Delaunay triangulation of n random points on the unit sphere:
@@ -114,17 +122,7 @@ inline mi::Constrained_mesh sphere_points_mesh(int n, unsigned seed)
     const double r = std::sqrt(x * x + y * y + z * z);
     if(r > 0.1 && r <= 1) input.emplace_back(x / r, y / r, z / r);
   }
-  CGAL::Delaunay_triangulation_3<K> dt(input.begin(), input.end());
-  std::vector<std::array<double, 3>> points;
-  std::map<CGAL::Delaunay_triangulation_3<K>::Vertex_handle, Vertex_id> id;
-  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-    id[v] = static_cast<Vertex_id>(points.size());
-    points.push_back({v->point().x(), v->point().y(), v->point().z()});
-  }
-  std::vector<std::array<Vertex_id, 4>> tets;
-  for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-    tets.push_back({id[c->vertex(0)], id[c->vertex(1)], id[c->vertex(2)], id[c->vertex(3)]});
-  return constrained_mesh(points, tets);
+  return delaunay_mesh(input, [](double) { return 1; });
 }
 
 inline double gamma_of(const mi::Constrained_mesh& cm, Tet_id t)

@@ -293,14 +293,19 @@ TEST(Improvement, MesherOptimizesByDefault)
   EXPECT_LE(q_on.min_dihedral_1st_percentile, q_on.mean_min_dihedral);
 }
 
+CGAL::Fast_mesher_3::Tetrahedral_mesh unimproved_mesh(const mesher_shapes::Surface& s)
+{
+  CGAL::Fast_mesher_3::Mesher_options off;
+  off.optimize = false;
+  return CGAL::Fast_mesher_3::mesh_surfaces(s.points, s.triangles, off);
+}
+
 // The public function on a mesh of one's own: here the mesher's, unimproved.
 TEST(Improvement, ImproveMeshOnAnExistingMesh)
 {
   using namespace CGAL::Fast_mesher_3;
   const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 40, 16);
-  Mesher_options off;
-  off.optimize = false;
-  const Tetrahedral_mesh plain = mesh_surfaces(s.points, s.triangles, off);
+  const Tetrahedral_mesh plain = unimproved_mesh(s);
   const Quality_report q_plain = quality_report(plain);
   Tetrahedral_mesh mesh = plain;
   const Improvement_statistics stats = improve_mesh(mesh);
@@ -335,10 +340,7 @@ TEST(Improvement, ImproveMeshOnAnExistingMesh)
 TEST(Improvement, ImproveMeshRefusesBadMeshes)
 {
   using namespace CGAL::Fast_mesher_3;
-  const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 20, 8);
-  Mesher_options off;
-  off.optimize = false;
-  const Tetrahedral_mesh good = mesh_surfaces(s.points, s.triangles, off);
+  const Tetrahedral_mesh good = unimproved_mesh(mesher_shapes::torus(1, 0.35, 20, 8));
   auto expect_refused = [](Tetrahedral_mesh bad, const std::string& words) {
     const Tetrahedral_mesh before = bad;
     try {
