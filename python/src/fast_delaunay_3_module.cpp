@@ -583,7 +583,8 @@ private:
 // ---------------------------------------------------------------- the mesher
 
 #ifdef FDT3_PYTHON_WITH_MESHER
-CGAL::Fast_mesher_3::Mesher_options mesher_options(const py::object& size, const py::object& threads, bool optimize)
+CGAL::Fast_mesher_3::Mesher_options mesher_options(const py::object& size, const py::object& threads, bool optimize,
+                                                   const py::object& size_field)
 {
   CGAL::Fast_mesher_3::Mesher_options options;
   options.optimize = optimize;
@@ -592,6 +593,8 @@ CGAL::Fast_mesher_3::Mesher_options mesher_options(const py::object& size, const
     if(!(options.maximum_size > 0)) throw py::value_error("mesh: size must be positive");
   }
   options.threads = thread_count(threads);
+  // The file's std::invalid_argument (naming the line) arrives as ValueError.
+  if(!size_field.is_none()) CGAL::Fast_mesher_3::read_size_field(py::str(size_field).cast<std::string>(), options);
   return options;
 }
 
@@ -611,9 +614,9 @@ py::tuple mesh_arrays(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh)
 }
 
 py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py::object& size,
-               const py::object& threads, bool optimize)
+               const py::object& threads, bool optimize, const py::object& size_field)
 {
-  const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize);
+  const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize, size_field);
   const Double_array v = point_rows(vertices, "vertices");
   const auto t = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
   if(!t || t.ndim() != 2 || t.shape(1) != 3) throw py::value_error("mesh: triangles must be an (m, 3) integer array");
@@ -637,9 +640,9 @@ py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py
 }
 
 py::tuple mesh_files(const std::vector<std::string>& paths, const py::object& size, const py::object& threads,
-                     bool optimize)
+                     bool optimize, const py::object& size_field)
 {
-  const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize);
+  const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize, size_field);
   if(paths.empty()) throw py::value_error("mesh_files: no file given");
   CGAL::Fast_mesher_3::Tetrahedral_mesh result;
   {
@@ -734,16 +737,20 @@ equal to an earlier vertex's point names that vertex.)")
 
 #ifdef FDT3_PYTHON_WITH_MESHER
   m.def("mesh", &mesh, py::arg("vertices"), py::arg("triangles"), py::arg("size") = py::none(),
-        py::arg("threads") = py::none(), py::arg("optimize") = true,
+        py::arg("threads") = py::none(), py::arg("optimize") = true, py::arg("size_field") = py::none(),
         R"(Tetrahedral mesh of the volumes bounded by closed triangulated surfaces.
 
 vertices (n, 3), triangles (t, 3) indices into vertices.  Returns (points,
 tets, subdomains): tets positively oriented, subdomain 1, 2, ... per
 tetrahedron (one per volume).  size: maximum edge size (default: the
-surface's own, interpolated).  A surface that is not closed, oriented,
+surface's own, interpolated).  size_field: a path to a size-field file,
+lines 'subdomain S H' (h at most H in subdomain S) and 'X Y Z H'
+(background points: h at most the nearest one's H); a malformed line
+raises ValueError naming it.  A surface that is not closed, oriented,
 manifold and free of self-intersections raises ValueError naming the
 triangles.)");
   m.def("mesh_files", &mesh_files, py::arg("paths"), py::arg("size") = py::none(), py::arg("threads") = py::none(),
-        py::arg("optimize") = true, "mesh() of the surfaces in files (.off .stl .obj .ply).");
+        py::arg("optimize") = true, py::arg("size_field") = py::none(),
+        "mesh() of the surfaces in files (.off .stl .obj .ply).");
 #endif
 }

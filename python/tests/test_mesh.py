@@ -108,3 +108,18 @@ def test_a_cgal_data_surface_from_its_file():
 def test_a_missing_file_raises():
     with pytest.raises(Exception, match="no_such_surface.off"):
         fast_delaunay_3.mesh_files(["/nonexistent/no_such_surface.off"])
+
+
+def test_a_size_field_file_refines_and_a_bad_one_raises_naming_its_line(tmp_path):
+    coarse = fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES)
+    field = tmp_path / "sizes.txt"
+    field.write_text("# a background point at the centre\n0.5 0.5 0.5 0.1\n")
+    fine = fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size_field=field)
+    assert len(fine[1]) > 10 * len(coarse[1])
+    volumes = signed_volumes(fine[0], fine[1])
+    assert (volumes > 0).all()
+    assert abs(volumes.sum() - 1.0) < 1e-9
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0.5 0.5 0.5 0.1\nsubdomain x 0.2\n")
+    with pytest.raises(ValueError, match="line 2"):
+        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size_field=bad)
