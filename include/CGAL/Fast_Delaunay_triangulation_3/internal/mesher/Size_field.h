@@ -59,7 +59,6 @@ public:
   // absent, none.
   void set_subdomain_caps(std::vector<double> cap_per_subdomain) { subdomain_caps_ = std::move(cap_per_subdomain); }
   void set_function(Function f) { function_ = std::move(f); }
-  bool has_function() const { return static_cast<bool>(function_); }
 
   // h clipped to the caps in `subdomain` (0: no subdomain's cap).
   double capped(double h, int subdomain) const
