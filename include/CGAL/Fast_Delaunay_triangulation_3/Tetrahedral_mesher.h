@@ -351,52 +351,25 @@ inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const 
                    points[tets[t][3]].data()) <= 0)
       refuse_mesh("tetrahedron #" + std::to_string(t) + " is not positively oriented (or is flat)");
   }
-  // Facets: each in one tetrahedron (boundary) or two; boundary edges: each
-  // in exactly two boundary facets (a closed boundary, no two volumes
-  // meeting at an edge only).
-  std::vector<Triangle_key> facets;
-  facets.reserve(4 * tets.size());
-  for(const auto& t : tets)
-    for(int f = 0; f < 4; ++f) facets.push_back(Triangle_key::of(t[facet_vertex[f][0]], t[facet_vertex[f][1]], t[facet_vertex[f][2]]));
-  std::sort(facets.begin(), facets.end());
-  std::vector<std::pair<Vertex_id, Vertex_id>> boundary_edges;
-  for(std::size_t k = 0; k < facets.size();) {
-    std::size_t run = 1;
-    while(k + run < facets.size() && facets[k + run] == facets[k]) ++run;
-    if(run > 2)
-      refuse_mesh("the facet (" + std::to_string(facets[k].v[0]) + ", " + std::to_string(facets[k].v[1]) + ", " +
-                  std::to_string(facets[k].v[2]) + ") is in " + std::to_string(run) + " tetrahedra");
-    if(run == 1)
-      for(int i = 0; i < 3; ++i) {
-        const Vertex_id a = facets[k].v[i], b = facets[k].v[(i + 1) % 3];
-        boundary_edges.push_back({std::min(a, b), std::max(a, b)});
-      }
-    k += run;
-  }
-  std::sort(boundary_edges.begin(), boundary_edges.end());
-  for(std::size_t k = 0; k < boundary_edges.size();) {
-    std::size_t run = 1;
-    while(k + run < boundary_edges.size() && boundary_edges[k + run] == boundary_edges[k]) ++run;
-    if(run != 2)
-      refuse_mesh("the boundary edge (" + std::to_string(boundary_edges[k].first) + ", " +
-                  std::to_string(boundary_edges[k].second) + ") is in " + std::to_string(run) +
-                  " boundary facets, not two");
-    k += run;
-  }
-  std::vector<Triangle_key> listed;
+  std::vector<std::pair<Triangle_key, std::size_t>> listed; // key, triangle number
   for(std::size_t k = 0; k < mesh.triangles.size(); ++k) {
     const auto& tri = mesh.triangles[k];
     for(std::uint32_t v : tri)
       if(v >= n) refuse_mesh("triangle #" + std::to_string(k) + " refers to point #" + std::to_string(v) + ", past the " +
                              std::to_string(n) + " points");
-    listed.push_back(Triangle_key::of(tri[0], tri[1], tri[2]));
-    if(!std::binary_search(facets.begin(), facets.end(), listed.back()))
-      refuse_mesh("triangle #" + std::to_string(k) + " is not a facet of the tetrahedra");
+    listed.push_back({Triangle_key::of(tri[0], tri[1], tri[2]), k});
   }
   std::sort(listed.begin(), listed.end());
 
   Constrained_mesh cm;
-  cm.mesh = flat_storage_from_tetrahedra(points, tets);
+  // Each facet in one tetrahedron (boundary) or two, each boundary edge in
+  // two boundary facets (a closed boundary, no two volumes meeting at an
+  // edge only): the flat arrays' pairing finds what breaks that.
+  try {
+    cm.mesh = flat_storage_from_tetrahedra(points, tets);
+  } catch(const std::invalid_argument& e) {
+    refuse_mesh(e.what());
+  }
   set_box(points, cm);
   cm.fit_slot_arrays();
   int most = 0;
@@ -406,11 +379,22 @@ inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const 
   }
   cm.number_of_subdomains = std::max(most, mesh.number_of_subdomains);
   const Flat_storage& m = cm.mesh;
+  std::vector<bool> is_facet(listed.size(), false);
   for(Tet_id t = 0; t < m.number_of_slots(); ++t)
-    for(int f = 0; f < 4; ++f)
-      if(cm.subdomain[t] != cm.subdomain[m.neighbor(t, f)] ||
-         std::binary_search(listed.begin(), listed.end(), facet_key(m, t, f)))
-        cm.constrained[t] |= std::uint8_t(1u << f);
+    for(int f = 0; f < 4; ++f) {
+      const Triangle_key key = facet_key(m, t, f);
+      const auto at = std::lower_bound(listed.begin(), listed.end(), std::make_pair(key, std::size_t(0)));
+      const bool is_listed = at != listed.end() && at->first == key;
+      // Equal keys are one triangle given twice: all of them are facets.
+      for(auto same = at; is_listed && same != listed.end() && same->first == key; ++same)
+        is_facet[same - listed.begin()] = true;
+      if(is_listed || cm.subdomain[t] != cm.subdomain[m.neighbor(t, f)]) cm.constrained[t] |= std::uint8_t(1u << f);
+    }
+  std::size_t first_not_a_facet = mesh.triangles.size();
+  for(std::size_t k = 0; k < listed.size(); ++k)
+    if(!is_facet[k]) first_not_a_facet = std::min(first_not_a_facet, listed[k].second);
+  if(first_not_a_facet < mesh.triangles.size())
+    refuse_mesh("triangle #" + std::to_string(first_not_a_facet) + " is not a facet of the tetrahedra");
   cm.size.assign(n, 0.0);
   for(std::size_t i = 0; i < mesh.size.size(); ++i) cm.size[i] = scaling.to_unit(mesh.size[i]);
   return cm;

@@ -187,6 +187,19 @@ inline Tetgen_mesh tetgen_recovery(const std::vector<std::array<double, 3>>& poi
   return out;
 }
 
+// The recovered tetrahedra as flat arrays.  What flat_storage_from_tetrahedra
+// refuses in a user's mesh can only be a recovery's fault here.
+inline Flat_storage recovered_flat_storage(const std::vector<std::array<double, 3>>& points,
+                                           const std::vector<std::array<Vertex_id, 4>>& tets)
+{
+  try {
+    return flat_storage_from_tetrahedra(points, tets);
+  } catch(const std::invalid_argument& e) {
+    throw std::logic_error(std::string("Tetrahedral_mesher: the recovered mesh is not a closed tetrahedral mesh: ") +
+                           e.what());
+  }
+}
+
 // RECOVERBOUNDARY of the whole surface by TetGen; replaces out.mesh.  Vertex
 // ids of the result are the input point numbers, then the Steiner points.
 inline void recover_with_tetgen(const Surface_soup& soup, Constrained_mesh& out, Recovery_report& report)
@@ -195,7 +208,7 @@ inline void recover_with_tetgen(const Surface_soup& soup, Constrained_mesh& out,
   for(std::size_t t = 0; t < triangles.size(); ++t)
     for(int i = 0; i < 3; ++i) triangles[t][i] = soup.triangles[t][i];
   const Tetgen_mesh result = tetgen_recovery(soup.points, triangles, "pYcMO0zQ");
-  out.mesh = flat_storage_from_tetrahedra(result.points, result.tets);
+  out.mesh = recovered_flat_storage(result.points, result.tets);
   out.vertex_of_input.resize(soup.points.size());
   for(std::size_t i = 0; i < soup.points.size(); ++i) out.vertex_of_input[i] = static_cast<Vertex_id>(i);
   report.used_tetgen = true;
@@ -882,7 +895,7 @@ inline bool recover_locally(const std::vector<Triangle_key>& input, const std::v
       tets.push_back(tv);
     }
   }
-  out.mesh = flat_storage_from_tetrahedra(points, tets);
+  out.mesh = recovered_flat_storage(points, tets);
   report.used_tetgen = report.tetgen_components > 0;
   report.steiner_points = steiner;
   return true;

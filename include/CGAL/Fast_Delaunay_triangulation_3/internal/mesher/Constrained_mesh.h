@@ -178,8 +178,12 @@ inline void set_box(const std::vector<std::array<double, 3>>& points, Constraine
   cm.filter = Static_filter::for_box(cm.box_lo, cm.box_hi);
 }
 
-// Flat arrays with ghost tetrahedra from finite tetrahedra that tile the
-// convex hull of `points`, each positively oriented.
+// Flat arrays with ghost tetrahedra from finite, positively oriented
+// tetrahedra whose boundary is closed (a ghost on each boundary facet).
+// Throws std::invalid_argument naming the facet or the edge where that is
+// not so: a facet in three or more tetrahedra, a boundary edge in other
+// than two boundary facets (volumes meeting at an edge only, or an open
+// boundary).
 inline Flat_storage flat_storage_from_tetrahedra(const std::vector<std::array<double, 3>>& points,
                                                  const std::vector<std::array<Vertex_id, 4>>& tets)
 {
@@ -211,8 +215,14 @@ inline Flat_storage flat_storage_from_tetrahedra(const std::vector<std::array<do
     std::sort(bucket.begin(), bucket.end(), [&](std::size_t x, std::size_t y) { return keys[x] < keys[y]; });
     for(std::size_t k = 0; k < bucket.size();) {
       if(k + 1 < bucket.size() && keys[bucket[k]] == keys[bucket[k + 1]]) {
-        if(k + 2 < bucket.size() && keys[bucket[k]] == keys[bucket[k + 2]])
-          throw std::logic_error("Tetrahedral_mesher: a facet shared by three tetrahedra after recovery");
+        std::size_t run = 2;
+        while(k + run < bucket.size() && keys[bucket[k]] == keys[bucket[k + run]]) ++run;
+        if(run > 2) {
+          const Triangle_key& key = keys[bucket[k]];
+          throw std::invalid_argument("the facet (" + std::to_string(key.v[0]) + ", " + std::to_string(key.v[1]) +
+                                      ", " + std::to_string(key.v[2]) + ") is in " + std::to_string(run) +
+                                      " tetrahedra");
+        }
         m.neighbor_code(code_of(bucket[k])) = code_of(bucket[k + 1]);
         m.neighbor_code(code_of(bucket[k + 1])) = code_of(bucket[k]);
         k += 2;
@@ -247,9 +257,13 @@ inline Flat_storage flat_storage_from_tetrahedra(const std::vector<std::array<do
   std::sort(edges.begin(), edges.end(), [](const Keyed_edge& x, const Keyed_edge& y) {
     return x.a != y.a ? x.a < y.a : x.b < y.b;
   });
-  for(std::size_t k = 0; k + 1 < edges.size(); k += 2) {
-    if(edges[k].a != edges[k + 1].a || edges[k].b != edges[k + 1].b)
-      throw std::logic_error("Tetrahedral_mesher: the recovered mesh's hull is not a closed surface");
+  for(std::size_t k = 0; k < edges.size(); k += 2) {
+    std::size_t run = 1;
+    while(k + run < edges.size() && edges[k + run].a == edges[k].a && edges[k + run].b == edges[k].b) ++run;
+    if(run != 2)
+      throw std::invalid_argument("the boundary edge (" + std::to_string(edges[k].a) + ", " +
+                                  std::to_string(edges[k].b) + ") is in " + std::to_string(run) +
+                                  " boundary facets, not two");
     m.neighbor_code(edges[k].code) = edges[k + 1].code;
     m.neighbor_code(edges[k + 1].code) = edges[k].code;
   }

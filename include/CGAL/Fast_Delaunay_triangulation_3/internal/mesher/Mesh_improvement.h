@@ -954,6 +954,85 @@ private:
   }
 
   // ------------------------------------------------------------ Steiner points
+  // The best split found so far: the region it replaces, the tetrahedra it
+  // makes with the new vertex, where that vertex goes and its size.
+  struct Split
+  {
+    double gain = 0;
+    double point[3];
+    std::vector<std::array<Vertex_id, 4>> made;
+    Tet_id region[max_ring_limit];
+    std::size_t region_size = 0;
+    double size = 0;
+  };
+
+  // How many of `tets` are bad with vertex c at p.
+  std::size_t bad_count(const std::vector<std::array<Vertex_id, 4>>& tets, Vertex_id c, const double* p) const
+  {
+    std::size_t n = 0;
+    for(const auto& tv : tets)
+      n += gamma_quality(corner(tv[0], c, p), corner(tv[1], c, p), corner(tv[2], c, p), corner(tv[3], c, p)) <
+                   options_.quality_threshold
+               ? 1
+               : 0;
+    return n;
+  }
+
+  // One split: `region` becomes w.made, whose new vertex c is placed by the
+  // position search from `start` and from a point further in; kept in
+  // `best` if it gains more than the best so far.
+  // A split may leave at most two more bad tetrahedra than it removes
+  // (they are better than the one it removes), unless it removes a true
+  // sliver (below): where the walls are thinner than the surface
+  // triangles, a new vertex would otherwise trade one sliver for many.
+  // (On CGAL's data, no slack at all kept fandisk's worst sliver, 0.06
+  // degrees, where two give 6.7 degrees; four grew couplingdown's bad
+  // tetrahedra by a fifth.)
+  void consider_split(Worker& w, Vertex_id c, const Tet_id* region, std::size_t region_size, const double* start,
+                      double size, Split& best) const
+  {
+    double worst = 1;
+    std::size_t bad_in_region = 0;
+    for(std::size_t k = 0; k < region_size; ++k) {
+      const double g = gamma_of(region[k]);
+      worst = std::min(worst, g);
+      bad_in_region += g < options_.quality_threshold ? 1 : 0;
+    }
+    // Two starts: the split simplex's centre, and halfway from it to the
+    // region's centre.  Where the region is a flat sliver between two
+    // surface triangles, the midpoint lies on the surface's near-plane
+    // and the search from it stays flat; the second start is inside.
+    double centre[3] = {0, 0, 0};
+    std::size_t corners = 0;
+    for(const auto& tv : w.made)
+      for(Vertex_id v : tv)
+        if(v != c) {
+          for(int a = 0; a < 3; ++a) centre[a] += cm_.mesh.point(v)[a];
+          ++corners;
+        }
+    double inner[3];
+    for(int a = 0; a < 3; ++a) inner[a] = (start[a] + centre[a] / double(corners)) / 2;
+    double p[3], p_inner[3];
+    double q = best_position(w.made, c, start, steiner_search_rounds, p);
+    const double q_inner = best_position(w.made, c, inner, steiner_search_rounds, p_inner);
+    if(q_inner > q) {
+      q = q_inner;
+      std::copy(p_inner, p_inner + 3, p);
+    }
+    // A true sliver (gamma under a quarter of the threshold) may go for
+    // any number of tetrahedra at half the threshold or better (fandisk,
+    // 2 threads: gamma 0.0006 for five at 0.21 or better).
+    const bool removes_a_sliver = worst < options_.quality_threshold / 4 && q >= options_.quality_threshold / 2;
+    if(q > 0 && q - worst > best.gain && (removes_a_sliver || bad_count(w.made, c, p) <= bad_in_region + 2)) {
+      best.gain = q - worst;
+      std::copy(p, p + 3, best.point);
+      best.made = w.made;
+      std::copy(region, region + region_size, best.region);
+      best.region_size = region_size;
+      best.size = size;
+    }
+  }
+
   // The best split of an interior edge or facet of t by a new vertex, if it
   // raises the worst gamma of the region it replaces.  The new vertex is
   // interior (no constrained facet is in the region's inside), gets the
@@ -970,73 +1049,7 @@ private:
     if(std::binary_search(no_split_helped_.begin(), no_split_helped_.end(), key)) return Outcome::unchanged;
     const Vertex_id c = static_cast<Vertex_id>(m.vertices.size());
     bool foreign = false;
-    double best_gain = 0, best_quality = 0;
-    double best_point[3];
-    std::vector<std::array<Vertex_id, 4>> best_made;
-    Tet_id best_region[max_ring_limit];
-    std::size_t best_region_size = 0;
-    double best_size = 0;
-    // Evaluates one split: the region's tetrahedra, the ones made with c,
-    // and where c starts.
-    // A split may leave at most two more bad tetrahedra than it removes
-    // (they are better than the one it removes), unless it removes a true
-    // sliver (below): where the walls are thinner than the surface
-    // triangles, a new vertex would otherwise trade one sliver for many.
-    // (On CGAL's data, no slack at all kept fandisk's worst sliver, 0.06
-    // degrees, where two give 6.7 degrees; four grew couplingdown's bad
-    // tetrahedra by a fifth.)
-    auto bad_count = [&](const std::vector<std::array<Vertex_id, 4>>& tets, const double* p) {
-      std::size_t n = 0;
-      for(const auto& tv : tets)
-        n += gamma_quality(corner(tv[0], c, p), corner(tv[1], c, p), corner(tv[2], c, p), corner(tv[3], c, p)) <
-                     options_.quality_threshold
-                 ? 1
-                 : 0;
-      return n;
-    };
-    auto consider = [&](const Tet_id* region, std::size_t region_size, const double* start, double size) {
-      double worst = 1;
-      std::size_t bad_in_region = 0;
-      for(std::size_t k = 0; k < region_size; ++k) {
-        const double g = gamma_of(region[k]);
-        worst = std::min(worst, g);
-        bad_in_region += g < options_.quality_threshold ? 1 : 0;
-      }
-      // Two starts: the split simplex's centre, and halfway from it to the
-      // region's centre.  Where the region is a flat sliver between two
-      // surface triangles, the midpoint lies on the surface's near-plane
-      // and the search from it stays flat; the second start is inside.
-      double centre[3] = {0, 0, 0};
-      std::size_t corners = 0;
-      for(const auto& tv : w.made)
-        for(Vertex_id v : tv)
-          if(v != c) {
-            for(int a = 0; a < 3; ++a) centre[a] += m.point(v)[a];
-            ++corners;
-          }
-      double inner[3];
-      for(int a = 0; a < 3; ++a) inner[a] = (start[a] + centre[a] / double(corners)) / 2;
-      double p[3], p_inner[3];
-      double q = best_position(w.made, c, start, steiner_search_rounds, p);
-      const double q_inner = best_position(w.made, c, inner, steiner_search_rounds, p_inner);
-      if(q_inner > q) {
-        q = q_inner;
-        std::copy(p_inner, p_inner + 3, p);
-      }
-      // A true sliver (gamma under a quarter of the threshold) may go for
-      // any number of tetrahedra at half the threshold or better (fandisk,
-      // 2 threads: gamma 0.0006 for five at 0.21 or better).
-      const bool removes_a_sliver = worst < options_.quality_threshold / 4 && q >= options_.quality_threshold / 2;
-      if(q > 0 && q - worst > best_gain && (removes_a_sliver || bad_count(w.made, p) <= bad_in_region + 2)) {
-        best_gain = q - worst;
-        best_quality = q;
-        std::copy(p, p + 3, best_point);
-        best_made = w.made;
-        std::copy(region, region + region_size, best_region);
-        best_region_size = region_size;
-        best_size = size;
-      }
-    };
+    Split best;
     Edge_ring r;
     for(const auto& e : edges) {
       const Outcome o = edge_ring(w, t, e[0], e[1], r, max_ring_limit);
@@ -1051,7 +1064,7 @@ private:
       }
       double mid[3];
       for(int a = 0; a < 3; ++a) mid[a] = (m.point(r.a)[a] + m.point(r.b)[a]) / 2;
-      consider(r.tets, static_cast<std::size_t>(r.n), mid, (cm_.size[r.a] + cm_.size[r.b]) / 2);
+      consider_split(w, c, r.tets, static_cast<std::size_t>(r.n), mid, (cm_.size[r.a] + cm_.size[r.b]) / 2, best);
     }
     const Vertex_id* tv = m.vertex_ids(t);
     for(int f = 0; f < 4; ++f) {
@@ -1085,27 +1098,26 @@ private:
         size += cm_.size[x] / 3;
       }
       const Tet_id region[2] = {t, u};
-      consider(region, 2, centroid, size);
+      consider_split(w, c, region, 2, centroid, size, best);
     }
-    if(best_gain <= 0) {
+    if(best.gain <= 0) {
       if(!foreign) no_split_helped_.insert(std::upper_bound(no_split_helped_.begin(), no_split_helped_.end(), key), key);
       return foreign ? Outcome::foreign : Outcome::unchanged;
     }
-    if(!ball_positive(best_made, c, best_point) ||
-       w.slots_left() + best_region_size < best_made.size())
+    if(!ball_positive(best.made, c, best.point) || w.slots_left() + best.region_size < best.made.size())
       return Outcome::unchanged;
     Vertex_record record;
-    std::copy(best_point, best_point + 3, record.xyz);
+    std::copy(best.point, best.point + 3, record.xyz);
     record.scratch = 0;
     m.vertices.push_back(record);
-    cm_.size.push_back(cm_.size.bounded(best_size, best_point, cm_.subdomain[t]));
+    cm_.size.push_back(cm_.size.bounded(best.size, best.point, cm_.subdomain[t]));
     on_surface_.push_back(0);
     incident_.push_back(no_tet);
     partition_of_vertex_.push_back(w.partition);
     active_.push_back(1);
     changed_.push_back(1);
-    w.made = best_made;
-    replace(w, best_region, best_region_size, cm_.subdomain[t]);
+    w.made = best.made;
+    replace(w, best.region, best.region_size, cm_.subdomain[t]);
     ++w.stats.steiner_points;
     return Outcome::improved;
   }
