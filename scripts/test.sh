@@ -26,9 +26,10 @@ if setarch "$(uname -m)" -R true 2>/dev/null; then
   sanitizer_runner=(setarch "$(uname -m)" -R)
 fi
 
-# Sanitizer builds: -O1 with line tables only. Reports keep function names and lines, and the CGAL-heavy test
-# programs, whose compilation dominates the time of this script, compile faster than with RelWithDebInfo's -O2 -g.
-sanitizer_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
+# Sanitizer builds: -O1 without debug information (and -O0 for the programs whose tests are short, see
+# FDT3_SANITIZER_O0_PROGRAMS in CMakeLists.txt): the CGAL-heavy test programs' compilation is most of the time of
+# this script. Reports name the functions; rebuild with -g1 for their lines.
+sanitizer_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g0 -DNDEBUG")
 
 release_build() {
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release &&
@@ -65,7 +66,7 @@ portable_build() {
 
 # Without TBB: the parallel engine's partitions run one after the other, and parallel data structures fall back.
 no_tbb_build() {
-  cmake -S . -B build-no-tbb -DCMAKE_BUILD_TYPE=Release -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON \
+  cmake -S . -B build-no-tbb -DCMAKE_BUILD_TYPE=Release -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DFDT3_BUILD_PYTHON=OFF \
         -DFDT3_TEST_FILES="$kernel_tests" -DFDT3_BUILD_BENCHMARKS=OFF -DFDT3_BUILD_EXAMPLES=OFF \
         -DFDT3_BUILD_TOOLS=OFF &&
     cmake --build build-no-tbb -j"$jobs" &&
