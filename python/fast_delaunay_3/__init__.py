@@ -8,7 +8,8 @@ engine of Fast_Delaunay_triangulation_3.
     >>> tets, neighbors = fast_delaunay_3.delaunay(np.random.default_rng(1).random((1000, 3)))
 
 ``delaunay`` and ``Triangulation`` work on numpy arrays and return index arrays
-into them; ``mesh`` and ``mesh_files`` run the Delaunay-refinement mesher;
+into them; ``mesh`` and ``mesh_files`` run the Delaunay-refinement mesher,
+``improve_mesh`` its improvement on a mesh of your own;
 ``to_meshio`` hands either on to meshio (``meshio.write("out.vtu", ...)``).
 """
 
@@ -17,9 +18,9 @@ from ._core import Triangulation, delaunay
 __all__ = ["Triangulation", "delaunay", "to_meshio"]
 
 try:
-    from ._core import mesh, mesh_files
+    from ._core import improve_mesh, mesh, mesh_files
 
-    __all__ += ["mesh", "mesh_files"]
+    __all__ += ["improve_mesh", "mesh", "mesh_files"]
 except ImportError:  # built without TetGen: no mesher
     pass
 

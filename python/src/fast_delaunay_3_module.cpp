@@ -621,7 +621,7 @@ py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py
   const auto t = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
   if(!t || t.ndim() != 2 || t.shape(1) != 3) throw py::value_error("mesh: triangles must be an (m, 3) integer array");
   std::vector<std::array<double, 3>> points(static_cast<std::size_t>(v.shape(0)));
-  std::copy(v.data(), v.data() + 3 * v.shape(0), &points[0][0]);
+  if(!points.empty()) std::copy(v.data(), v.data() + 3 * v.shape(0), &points[0][0]);
   std::vector<std::array<std::size_t, 3>> tris(static_cast<std::size_t>(t.shape(0)));
   for(py::ssize_t k = 0; k < t.shape(0); ++k)
     for(int i = 0; i < 3; ++i) {
@@ -637,6 +637,71 @@ py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py
     result = CGAL::Fast_mesher_3::mesh_surfaces(points, tris, options);
   }
   return mesh_arrays(result);
+}
+
+// The rows of an (m, K) integer array, each an index into `rows` rows.
+template <std::size_t K>
+std::vector<std::array<std::uint32_t, K>> index_rows(const py::handle& given, std::size_t rows, const char* what)
+{
+  const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(given);
+  if(!a || a.ndim() != 2 || a.shape(1) != static_cast<py::ssize_t>(K))
+    throw py::value_error(std::string("improve_mesh: ") + what + " must be an (m, " + std::to_string(K) +
+                          ") integer array");
+  std::vector<std::array<std::uint32_t, K>> out(static_cast<std::size_t>(a.shape(0)));
+  for(std::size_t k = 0; k < out.size(); ++k)
+    for(std::size_t i = 0; i < K; ++i) {
+      const std::int64_t index = a.data()[K * k + i];
+      if(index < 0 || static_cast<std::uint64_t>(index) >= rows)
+        throw py::value_error(std::string("improve_mesh: ") + what + " row " + std::to_string(k) +
+                              " has vertex index " + std::to_string(index) + ", not a row of points (" +
+                              std::to_string(rows) + " rows)");
+      out[k][i] = static_cast<std::uint32_t>(index);
+    }
+  return out;
+}
+
+// improve_mesh(points, tets, subdomains, triangles, ...): the mesher's
+// improvement on a mesh of the caller's; (points, tets, subdomains, statistics).
+py::tuple improve_mesh(const py::handle& points, const py::handle& tets, const py::object& subdomains,
+                       const py::object& triangles, double quality_threshold, const py::object& threads,
+                       bool add_points, int passes)
+{
+  CGAL::Fast_mesher_3::Mesher_options options;
+  options.quality_threshold = quality_threshold;
+  options.threads = thread_count(threads);
+  options.improvement_adds_points = add_points;
+  if(passes < 1) throw py::value_error("improve_mesh: passes must be at least 1, got " + std::to_string(passes));
+  options.max_improvement_passes = passes;
+  const Double_array v = point_rows(points, "improve_mesh: points");
+  CGAL::Fast_mesher_3::Tetrahedral_mesh m;
+  m.points.resize(static_cast<std::size_t>(v.shape(0)));
+  if(!m.points.empty()) std::copy(v.data(), v.data() + 3 * v.shape(0), &m.points[0][0]);
+  m.tetrahedra = index_rows<4>(tets, m.points.size(), "tets");
+  if(subdomains.is_none()) {
+    m.subdomain.assign(m.tetrahedra.size(), 1);
+  } else {
+    const auto s = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(subdomains);
+    if(!s || s.ndim() != 1) throw py::value_error("improve_mesh: subdomains must be a 1-d integer array");
+    m.subdomain.assign(s.data(), s.data() + s.shape(0)); // the count and the values are checked below
+  }
+  if(!triangles.is_none()) m.triangles = index_rows<3>(triangles, m.points.size(), "triangles");
+  CGAL::Fast_mesher_3::Improvement_statistics stats;
+  {
+    py::gil_scoped_release unlocked;
+    stats = CGAL::Fast_mesher_3::improve_mesh(m, options);
+  }
+  py::dict report;
+  report["bad_before"] = stats.bad_before;
+  report["bad_after"] = stats.bad_after;
+  report["min_gamma_before"] = stats.min_gamma_before;
+  report["min_gamma_after"] = stats.min_gamma_after;
+  report["min_dihedral_before"] = stats.min_dihedral_before;
+  report["min_dihedral_after"] = stats.min_dihedral_after;
+  report["steiner_points"] = stats.steiner_points;
+  report["passes"] = stats.passes;
+  report["seconds"] = stats.seconds;
+  const py::tuple arrays = mesh_arrays(m);
+  return py::make_tuple(arrays[0], arrays[1], arrays[2], report);
 }
 
 py::tuple mesh_files(const std::vector<std::string>& paths, const py::object& size, const py::object& threads,
@@ -749,6 +814,25 @@ lines 'subdomain S H' (h at most H in subdomain S) and 'X Y Z H'
 raises ValueError naming it.  A surface that is not closed, oriented,
 manifold and free of self-intersections raises ValueError naming the
 triangles.)");
+  m.def("improve_mesh", &improve_mesh, py::arg("points"), py::arg("tets"), py::arg("subdomains") = py::none(),
+        py::arg("triangles") = py::none(), py::arg("quality_threshold") = 0.3, py::arg("threads") = py::none(),
+        py::arg("add_points") = true, py::arg("passes") = 10,
+        R"(The mesher's improvement on a tetrahedral mesh of your own.
+
+points (n, 3); tets (m, 4) indices into points, positively oriented;
+subdomains (m,) integers from 1 (default: all 1); triangles (t, 3) facets to
+keep besides the boundary and the facets between subdomains.  Flips, edge
+removal, smoothing of interior points and (add_points) interior Steiner
+points raise the quality gamma = 3 r_in / r_circ of the tetrahedra under
+quality_threshold; the boundary, the listed triangles and the subdomain
+interfaces stay exactly as given, their points do not move.  Returns
+(points, tets, subdomains, statistics): the given points first (interior
+ones possibly moved), then the added ones; statistics a dict (bad_before,
+bad_after, min_gamma_before, min_gamma_after, min_dihedral_before,
+min_dihedral_after in degrees, steiner_points, passes, seconds).  A mesh
+it cannot take (an inverted or flat tetrahedron, an index out of range, a
+facet in three tetrahedra, a boundary that is not closed, a triangle that
+is not a facet) raises ValueError naming the defect.)");
   m.def("mesh_files", &mesh_files, py::arg("paths"), py::arg("size") = py::none(), py::arg("threads") = py::none(),
         py::arg("optimize") = true, py::arg("size_field") = py::none(),
         "mesh() of the surfaces in files (.off .stl .obj .ply).");

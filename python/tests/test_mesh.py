@@ -1,6 +1,6 @@
-# fast_delaunay_3.mesh() and mesh_files(): the volumes of the meshes against
-# the volumes their surfaces enclose (divergence theorem), the boundary
-# triangles kept, and the errors of bad surfaces.
+# fast_delaunay_3.mesh(), mesh_files() and improve_mesh(): the volumes of the
+# meshes against the volumes their surfaces enclose (divergence theorem), the
+# boundary triangles kept, the quality measured here, and the errors of bad input.
 import os
 
 import numpy as np
@@ -123,3 +123,88 @@ def test_a_size_field_file_refines_and_a_bad_one_raises_naming_its_line(tmp_path
     bad.write_text("0.5 0.5 0.5 0.1\nsubdomain x 0.2\n")
     with pytest.raises(ValueError, match="line 2"):
         fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size_field=bad)
+
+
+def gamma(points, tets):
+    """3 r_in / r_circ of each tetrahedron, from its volume, facet areas and
+    circumradius (|a^2 (b x c) + b^2 (c x a) + c^2 (a x b)| / 12 V)."""
+    v = np.asarray(points)[np.asarray(tets)]
+    a, b, c = v[:, 1] - v[:, 0], v[:, 2] - v[:, 0], v[:, 3] - v[:, 0]
+    volume = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
+    area = sum(np.linalg.norm(np.cross(v[:, j] - v[:, i], v[:, k] - v[:, i]), axis=1) / 2
+               for i, j, k in ((0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)))
+    def squared(x):
+        return np.einsum("ij,ij->i", x, x)
+    numerator = (squared(a)[:, None] * np.cross(b, c) + squared(b)[:, None] * np.cross(c, a)
+                 + squared(c)[:, None] * np.cross(a, b))
+    r_circ = np.linalg.norm(numerator, axis=1) / (12 * volume)
+    return 3 * (3 * volume / area) / r_circ
+
+
+def hull_facets(points, tets):
+    """The facets in one tetrahedron only, by their corners' coordinates."""
+    count = {}
+    for t in np.asarray(tets):
+        for i in range(4):
+            key = tuple(sorted(np.delete(t, i).tolist()))
+            count[key] = count.get(key, 0) + 1
+    return {tuple(sorted(tuple(points[v]) for v in key)) for key, n in count.items() if n == 1}
+
+
+def random_cube_delaunay(n, seed):
+    """Delaunay tetrahedra of the cube's corners and n random points inside:
+    the slivers of a Delaunay triangulation, and interior points that may move."""
+    inside = np.random.default_rng(seed).uniform(0.05, 0.95, (n, 3))
+    points = np.vstack([CUBE_POINTS, inside])
+    tets, _ = fast_delaunay_3.delaunay(points, threads=1)
+    return points, np.ascontiguousarray(tets)
+
+
+def test_improve_mesh_raises_the_worst_gamma_and_keeps_the_boundary():
+    points, tets = random_cube_delaunay(300, 7)
+    before = gamma(points, tets)
+    assert (before < 0.3).sum() > 50
+    out_points, out_tets, subdomains, stats = fast_delaunay_3.improve_mesh(points, tets, threads=2)
+    after = gamma(out_points, out_tets)
+    assert (signed_volumes(out_points, out_tets) > 0).all()
+    assert signed_volumes(out_points, out_tets).sum() == pytest.approx(1.0, rel=1e-12)
+    assert set(subdomains.tolist()) == {1}
+    assert hull_facets(out_points, out_tets) == hull_facets(points, tets)
+    np.testing.assert_array_equal(out_points[:8], CUBE_POINTS)  # on the boundary: never moved
+    assert after.min() > 5 * before.min()
+    assert stats["bad_before"] == (before < 0.3).sum()
+    assert stats["bad_after"] == (after < 0.3).sum() < stats["bad_before"] / 2
+    assert stats["min_gamma_after"] == pytest.approx(after.min(), rel=1e-9)
+    assert len(out_points) == len(points) + stats["steiner_points"]
+    kept = fast_delaunay_3.improve_mesh(points, tets, add_points=False, threads=1)
+    assert len(kept[0]) == len(points) and kept[3]["steiner_points"] == 0
+
+
+def test_improve_mesh_keeps_the_interface_between_subdomains():
+    points, tets = random_cube_delaunay(300, 8)
+    centres = points[tets].mean(axis=1)
+    subdomains = np.where(centres[:, 0] < 0.5, 1, 2)
+    out_points, out_tets, out_subdomains, _ = fast_delaunay_3.improve_mesh(points, tets, subdomains)
+    volumes = signed_volumes(out_points, out_tets)
+    for s in (1, 2):
+        assert volumes[out_subdomains == s].sum() == pytest.approx(
+            signed_volumes(points, tets)[subdomains == s].sum(), rel=1e-12)
+
+
+@pytest.mark.parametrize("change, words", [
+    (lambda p, t, s: (p, t[:, [1, 0, 2, 3]], s), "not positively oriented"),
+    (lambda p, t, s: (p, np.where(t == 5, len(p), t), s), "not a row of points"),
+    (lambda p, t, s: (p, t, s[:-1]), "subdomain tags"),
+    (lambda p, t, s: (p, t, s * 0), "subdomain 0"),
+    (lambda p, t, s: (p, t[:, :3], s), r"\(m, 4\)"),
+])
+def test_improve_mesh_raises_naming_the_defect(change, words):
+    points, tets = random_cube_delaunay(50, 9)
+    bad_points, bad_tets, bad_subdomains = change(points, tets, np.ones(len(tets), dtype=np.int32))
+    with pytest.raises(ValueError, match=words):
+        fast_delaunay_3.improve_mesh(bad_points, bad_tets, bad_subdomains)
+
+
+def test_improve_mesh_of_nothing_raises():
+    with pytest.raises(ValueError, match="no tetrahedra"):
+        fast_delaunay_3.improve_mesh(np.zeros((0, 3)), np.zeros((0, 4), dtype=np.int64))
