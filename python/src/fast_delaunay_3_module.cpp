@@ -588,7 +588,24 @@ CGAL::Fast_mesher_3::Mesher_options mesher_options(const py::object& size, const
 {
   CGAL::Fast_mesher_3::Mesher_options options;
   options.optimize = optimize;
-  if(!size.is_none()) {
+  if(py::isinstance<py::function>(size) || (!size.is_none() && PyCallable_Check(size.ptr()))) {
+    // h(x, y, z), called from the mesher's threads while mesh() has let the
+    // GIL go: each call takes it back.  The handle does not own the
+    // callable (copies of the std::function die without the GIL); the
+    // caller's argument keeps it alive for the whole call.  What it raises
+    // ends the meshing as RuntimeError with its text.
+    const py::handle h = size;
+    options.size_function = [h](double x, double y, double z) {
+      py::gil_scoped_acquire gil;
+      try {
+        return h(x, y, z).cast<double>();
+      } catch(py::error_already_set& e) {
+        throw std::runtime_error(std::string("mesh: the size function raised ") + e.what());
+      } catch(const py::cast_error&) {
+        throw std::invalid_argument("mesh: the size function returned something that is not a number");
+      }
+    };
+  } else if(!size.is_none()) {
     options.maximum_size = size.cast<double>();
     if(!(options.maximum_size > 0)) throw py::value_error("mesh: size must be positive");
   }
@@ -808,7 +825,10 @@ equal to an earlier vertex's point names that vertex.)")
 vertices (n, 3), triangles (t, 3) indices into vertices.  Returns (points,
 tets, subdomains): tets positively oriented, subdomain 1, 2, ... per
 tetrahedron (one per volume).  size: maximum edge size (default: the
-surface's own, interpolated).  size_field: a path to a size-field file,
+surface's own, interpolated), or a callable h(x, y, z) giving the size
+where it is below the surface's (called from the mesher's threads, one at
+a time under the GIL; an exception it raises ends the meshing as
+RuntimeError, a value that is not a positive number raises ValueError).  size_field: a path to a size-field file,
 lines 'subdomain S H' (h at most H in subdomain S) and 'X Y Z H'
 (background points: h at most the nearest one's H); a malformed line
 raises ValueError naming it.  A surface that is not closed, oriented,

@@ -208,3 +208,27 @@ def test_improve_mesh_raises_naming_the_defect(change, words):
 def test_improve_mesh_of_nothing_raises():
     with pytest.raises(ValueError, match="no tetrahedra"):
         fast_delaunay_3.improve_mesh(np.zeros((0, 3)), np.zeros((0, 4), dtype=np.int64))
+
+
+def test_a_size_callable_refines_where_it_is_small_and_its_errors_arrive():
+    def finer_to_the_left(x, y, z):
+        return 0.04 + 0.4 * x
+    points, tets, _ = fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=finer_to_the_left, threads=2)
+    volumes = signed_volumes(points, tets)
+    assert (volumes > 0).all()
+    assert abs(volumes.sum() - 1.0) < 1e-9
+    x = points[tets].mean(axis=1)[:, 0]
+    assert (x < 0.25).sum() > 10 * (x > 0.75).sum()
+    # The tetrahedra near x = 0.1 have edges near the size asked for there.
+    corners = points[tets[(x > 0.05) & (x < 0.15)]]
+    longest = np.max([np.linalg.norm(corners[:, i] - corners[:, j], axis=1) for i in range(4) for j in range(i)], axis=0)
+    assert 0.5 * 0.08 < np.median(longest) < 2 * 0.08
+
+    def broken(x, y, z):
+        raise KeyError("no size here")
+    with pytest.raises(RuntimeError, match="no size here"):
+        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=broken, threads=2)
+    with pytest.raises(ValueError, match="not a positive finite size"):
+        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=lambda x, y, z: -1.0)
+    with pytest.raises(ValueError, match="not a number"):
+        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=lambda x, y, z: "small")
