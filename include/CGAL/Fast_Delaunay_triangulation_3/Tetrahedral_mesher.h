@@ -351,7 +351,13 @@ inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const 
                    points[tets[t][3]].data()) <= 0)
       refuse_mesh("tetrahedron #" + std::to_string(t) + " is not positively oriented (or is flat)");
   }
-  std::vector<std::pair<Triangle_key, std::size_t>> listed; // key, triangle number
+  struct Listed_triangle
+  {
+    Triangle_key key;
+    std::size_t number; // in mesh.triangles
+    bool operator<(const Listed_triangle& o) const { return key < o.key || (key == o.key && number < o.number); }
+  };
+  std::vector<Listed_triangle> listed;
   for(std::size_t k = 0; k < mesh.triangles.size(); ++k) {
     const auto& tri = mesh.triangles[k];
     for(std::uint32_t v : tri)
@@ -383,16 +389,16 @@ inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const 
   for(Tet_id t = 0; t < m.number_of_slots(); ++t)
     for(int f = 0; f < 4; ++f) {
       const Triangle_key key = facet_key(m, t, f);
-      const auto at = std::lower_bound(listed.begin(), listed.end(), std::make_pair(key, std::size_t(0)));
-      const bool is_listed = at != listed.end() && at->first == key;
+      const auto at = std::lower_bound(listed.begin(), listed.end(), Listed_triangle{key, 0});
+      const bool is_listed = at != listed.end() && at->key == key;
       // Equal keys are one triangle given twice: all of them are facets.
-      for(auto same = at; is_listed && same != listed.end() && same->first == key; ++same)
+      for(auto same = at; is_listed && same != listed.end() && same->key == key; ++same)
         is_facet[same - listed.begin()] = true;
       if(is_listed || cm.subdomain[t] != cm.subdomain[m.neighbor(t, f)]) cm.constrained[t] |= std::uint8_t(1u << f);
     }
   std::size_t first_not_a_facet = mesh.triangles.size();
   for(std::size_t k = 0; k < listed.size(); ++k)
-    if(!is_facet[k]) first_not_a_facet = std::min(first_not_a_facet, listed[k].second);
+    if(!is_facet[k]) first_not_a_facet = std::min(first_not_a_facet, listed[k].number);
   if(first_not_a_facet < mesh.triangles.size())
     refuse_mesh("triangle #" + std::to_string(first_not_a_facet) + " is not a facet of the tetrahedra");
   cm.size.assign(n, 0.0);
