@@ -588,7 +588,7 @@ CGAL::Fast_mesher_3::Mesher_options mesher_options(const py::object& size, const
 {
   CGAL::Fast_mesher_3::Mesher_options options;
   options.optimize = optimize;
-  if(py::isinstance<py::function>(size) || (!size.is_none() && PyCallable_Check(size.ptr()))) {
+  if(!size.is_none() && PyCallable_Check(size.ptr())) {
     // h(x, y, z), called from the mesher's threads while mesh() has let the
     // GIL go: each call takes it back.  The handle does not own the
     // callable (copies of the std::function die without the GIL); the
@@ -828,10 +828,10 @@ tetrahedron (one per volume).  size: maximum edge size (default: the
 surface's own, interpolated), or a callable h(x, y, z) giving the size
 where it is below the surface's (called from the mesher's threads, one at
 a time under the GIL; an exception it raises ends the meshing as
-RuntimeError, a value that is not a positive number raises ValueError).  size_field: a path to a size-field file,
-lines 'subdomain S H' (h at most H in subdomain S) and 'X Y Z H'
-(background points: h at most the nearest one's H); a malformed line
-raises ValueError naming it.  A surface that is not closed, oriented,
+RuntimeError, a value that is not a positive number raises ValueError).
+size_field: a path to a size-field file, lines 'subdomain S H' (h at most
+H in subdomain S) and 'X Y Z H' (background points: h at most the nearest
+one's H); a malformed line raises ValueError naming it.  A surface that is not closed, oriented,
 manifold and free of self-intersections raises ValueError naming the
 triangles.)");
   m.def("improve_mesh", &improve_mesh, py::arg("points"), py::arg("tets"), py::arg("subdomains") = py::none(),
