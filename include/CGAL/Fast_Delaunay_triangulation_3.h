@@ -821,9 +821,14 @@ public:
 
   // CGAL's move_if_no_collision: if p is another vertex, that vertex is
   // returned and nothing changes; otherwise v moves to p and is returned,
-  // its handle and info kept (its cells are new).  A moved vertex is removed
-  // and inserted again under the same id; no shortcut for small moves.  A
-  // NaN or infinite coordinate throws std::invalid_argument, nothing changed.
+  // its handle and info kept (its cells are new, with Info()).  In dimension
+  // 3, when the cells of v with p for its point are still the Delaunay
+  // triangulation (is_delaunay_after_displacement), only the point changes
+  // and the cells of v keep their slots; when p is elsewhere in the star of
+  // v and in conflict with no cell beyond it, the star is re-triangulated
+  // from its link and p; otherwise v is removed and inserted again under the
+  // same id.  A NaN or infinite coordinate throws std::invalid_argument,
+  // nothing changed.
   Vertex_handle move_if_no_collision(Vertex_handle v, const Point& p)
   {
     std::vector<Tet_id> made;
@@ -843,6 +848,23 @@ public:
   {
     std::vector<Tet_id> made;
     return move_vertex(v, p, true, made);
+  }
+
+  // CGAL's is_delaunay_after_displacement (dimension 3): whether the cells
+  // of v, with p for v's point, are still the Delaunay triangulation, so
+  // that moving v to p changes nothing else.  Exact, with CGAL's
+  // perturbation.  CGAL 5.5 checks the facets through v only; this also
+  // checks the facets opposite v, without which the answer can be wrong.
+  bool is_delaunay_after_displacement(Vertex_handle v, const Point& p) const
+  {
+    check_removable(v, "is_delaunay_after_displacement");
+    if(dimension() != 3)
+      throw std::invalid_argument("Fast_Delaunay_triangulation_3::is_delaunay_after_displacement: dimension " +
+                                  std::to_string(dimension()) + ", not 3");
+    double xyz[3];
+    engine_coordinates(p, xyz);
+    if(v->point() == p) return true;
+    return anchor_->core.stays_delaunay_after_move(v.index(), xyz, removal_start(v));
   }
 
   // ---------------------------------------------------------------- conflict zone (dimensions 3 and 2)
@@ -1766,6 +1788,12 @@ private:
     double xyz[3];
     engine_coordinates(p, xyz);
     if(v->point() == p) return v;
+    const Tet_id start = removal_start(v);
+    if(dimension() == 3 && anchor_->core.move_within_star(v.index(), xyz, start, made)) {
+      anchor_->cells_made(made);
+      anchor_->kernel_points.replace(v.index(), p);
+      return v;
+    }
     if(!remove_on_collision) {
       // As CGAL, p is located from v's cell: moves are mostly short.
       Locate_type lt;
@@ -1775,7 +1803,7 @@ private:
     }
     // move(): a point already there is found by the insertion, after v's
     // removal, which is then all that happens (one walk fewer).
-    const Vertex_id moved = anchor_->core.move(v.index(), xyz, removal_start(v), made);
+    const Vertex_id moved = anchor_->core.move(v.index(), xyz, start, made);
     anchor_->cells_made(made);
     if(moved == v.index()) anchor_->kernel_points.replace(moved, p);
     return Vertex_handle(anchor_.get(), moved);

@@ -393,6 +393,120 @@ TEST(Move, MoveIfNoCollisionKeepsTheHandle)
   }
 }
 
+// Oracle of is_delaunay_after_displacement(v, p): the cells of the
+// triangulation with p for v's point are those of CGAL's triangulation of the
+// moved points.
+bool cells_stay_delaunay(const Tracked& t, std::size_t k, const Point& to)
+{
+  std::vector<Point> moved = t.points();
+  moved[k] = to;
+  const Cgal_dt cgal(moved.begin(), moved.end());
+  if(cgal.dimension() != 3 || cgal.number_of_vertices() != moved.size()) return false;
+  std::vector<Cell_key> ours;
+  const Point from = t.vertices[k].second;
+  for(auto c = t.tr.finite_cells_begin(); c != t.tr.finite_cells_end(); ++c) {
+    Cell_key key;
+    for(int i = 0; i < 4; ++i) {
+      const Point& q = c->vertex(i)->point();
+      key[i] = point_key(q == from ? to : q);
+    }
+    std::sort(key.begin(), key.end());
+    ours.push_back(key);
+  }
+  std::sort(ours.begin(), ours.end());
+  return ours == finite_cell_keys(cgal);
+}
+
+// Moves of every size on random points (hull vertices included) and on a
+// grid, whose ties only CGAL's perturbation decides: the answer of
+// is_delaunay_after_displacement is the oracle's, and the moves that keep
+// the cells (taken in place) and those that do not both give CGAL's
+// triangulation.
+void check_displacements(const std::vector<Point>& points, const std::vector<double>& scales, int moves,
+                         std::uint64_t seed)
+{
+  Tracked t;
+  for(const Point& p : points) t.insert(p);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int kept = 0, changed = 0;
+  for(int s = 0; s < moves && !::testing::Test::HasFatalFailure(); ++s) {
+    const std::size_t k = rng() % t.vertices.size();
+    const double scale = scales[rng() % scales.size()];
+    const Point& from = t.vertices[k].second;
+    const Point to(from.x() + scale * u(rng), from.y() + scale * u(rng), from.z() + scale * u(rng));
+    const bool expected = cells_stay_delaunay(t, k, to);
+    ASSERT_EQ(t.tr.is_delaunay_after_displacement(t.vertices[k].first, to), expected) << "move " << s;
+    std::vector<Fast_dt::Cell_handle> around, made;
+    t.tr.incident_cells(t.vertices[k].first, std::back_inserter(around));
+    ASSERT_EQ(t.tr.move_if_no_collision_and_give_new_cells(t.vertices[k].first, to, std::back_inserter(made)),
+              t.vertices[k].first);
+    t.vertices[k].second = to;
+    if(expected) {
+      // In place: the very cells of v, all reported as new.
+      std::sort(around.begin(), around.end());
+      std::sort(made.begin(), made.end());
+      EXPECT_EQ(made, around);
+      ++kept;
+    } else {
+      ++changed;
+    }
+    t.check(("move " + std::to_string(s)).c_str());
+  }
+  EXPECT_GT(kept, moves / 10);
+  EXPECT_GT(changed, moves / 10);
+}
+
+TEST(Move, InPlaceWhenTheCellsStayDelaunay)
+{
+  std::mt19937_64 rng(31);
+  check_displacements(random_points(150, rng), {1e-9, 1e-3, 3e-2, 0.2}, 160, 32);
+}
+
+TEST(Move, InPlaceOnAGridDecidedByThePerturbation)
+{
+  // Moves by 0 or 1 along each axis and by tiny amounts: cospherical and
+  // coplanar ties everywhere.
+  std::vector<Point> points = grid(4);
+  Tracked t;
+  for(const Point& p : points) t.insert(p);
+  std::mt19937_64 rng(33);
+  int kept = 0;
+  for(int s = 0; s < 120 && !::testing::Test::HasFatalFailure(); ++s) {
+    const std::size_t k = rng() % t.vertices.size();
+    const Point& from = t.vertices[k].second;
+    const double d = s % 2 ? 1.0 : 1.0 / 1024;
+    const Point to(from.x() + d * double(int(rng() % 3) - 1), from.y() + d * double(int(rng() % 3) - 1),
+                   from.z());
+    bool collides = false;
+    for(const auto& e : t.vertices) collides = collides || (e.second == to && e.first != t.vertices[k].first);
+    if(collides || to == from) continue;
+    const bool expected = cells_stay_delaunay(t, k, to);
+    ASSERT_EQ(t.tr.is_delaunay_after_displacement(t.vertices[k].first, to), expected) << "move " << s;
+    kept += expected;
+    ASSERT_EQ(t.tr.move(t.vertices[k].first, to), t.vertices[k].first);
+    t.vertices[k].second = to;
+    t.check(("grid move " + std::to_string(s)).c_str());
+  }
+  EXPECT_GT(kept, 0);
+}
+
+TEST(Move, IsDelaunayAfterDisplacementRefusesBadInput)
+{
+  Tracked t;
+  std::mt19937_64 rng(34);
+  for(const Point& p : random_points(20, rng)) t.insert(p);
+  const Vertex_handle v = t.vertices[0].first;
+  EXPECT_TRUE(t.tr.is_delaunay_after_displacement(v, v->point()));
+  EXPECT_THROW(t.tr.is_delaunay_after_displacement(t.tr.infinite_vertex(), Point(0, 0, 0)), std::invalid_argument);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(t.tr.is_delaunay_after_displacement(v, Point(nan, 0, 0)), std::invalid_argument);
+  Fast_dt flat;
+  for(int i = 0; i < 5; ++i) flat.insert(Point(i, i * i, 0));
+  EXPECT_THROW(flat.is_delaunay_after_displacement(flat.finite_vertices_begin(), Point(0, 0, 1)),
+               std::invalid_argument);
+}
+
 TEST(Remove, BadInputThrowsAndChangesNothing)
 {
   Tracked t;

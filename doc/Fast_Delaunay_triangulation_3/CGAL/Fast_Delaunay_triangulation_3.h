@@ -77,8 +77,11 @@ partitions space instead). Default: `Default`.
   when an insertion replaces the cell, as CGAL's cells are new.
 - `remove(first, last)` and `remove_cluster()` remove the vertices one by
   one, also with a `Parallel_tag` data structure; `move()` and
-  `move_if_no_collision()` always remove and re-insert the vertex (keeping
-  its handle and info). The triangulations are CGAL's.
+  `move_if_no_collision()` keep the vertex's handle and info, and change only
+  its point when its cells stay Delaunay. The triangulations are CGAL's.
+- `is_delaunay_after_displacement()` also checks the facets opposite the
+  vertex, which CGAL 5.5's test leaves out, and throws
+  `std::invalid_argument` below dimension 3 (CGAL's precondition).
 - `Simplex` (CGAL's `Triangulation_simplex_3`) is provided; its order sorts
   by dimension then by handles (CGAL's by addresses) and `operator<<` prints
   vertex indices. The segment traverser is provided for two points
@@ -590,6 +593,14 @@ Same as `move_if_no_collision()`, except that if `p` is the point of another
 vertex `w`, `v` is removed and `w` returned.
 */
 Vertex_handle move(Vertex_handle v, const Point& p);
+
+/*!
+In dimension 3, whether the cells of `v` with `p` for its point are still
+the Delaunay triangulation, so that moving `v` to `p` changes nothing else
+(exact, with CGAL's perturbation). Throws `std::invalid_argument` below
+dimension 3, for a bad `v`, or for a NaN or infinite coordinate.
+*/
+bool is_delaunay_after_displacement(Vertex_handle v, const Point& p) const;
 
 /// @}
 

@@ -38,6 +38,14 @@ public:
     if(2 * (count_ + 1) > slots_.size()) grow();
     return place(slots_, id);
   }
+  bool contains(std::uint64_t id) const
+  {
+    const std::size_t mask = slots_.size() - 1;
+    for(std::size_t k = hash(id) & mask;; k = (k + 1) & mask) {
+      if(slots_[k] == id) return true;
+      if(slots_[k] == empty) return false;
+    }
+  }
 
 private:
   static constexpr std::uint64_t empty = ~std::uint64_t(0);

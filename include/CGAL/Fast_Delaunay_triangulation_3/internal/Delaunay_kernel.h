@@ -117,6 +117,43 @@ inline void update_sub_determinants(Flat_storage& m, Tet_id t)
 
 constexpr Tet_id no_tet = Tet_id(-1);
 
+// INIT (paper Algorithm 1): the empty storage `mesh` (its vertex records
+// written) becomes the tetrahedron of the four given vertices, not coplanar,
+// and the four ghosts on its facets.  `simplex` is reordered to be
+// positively oriented.
+inline void make_initial_tetrahedron(Flat_storage& mesh, Vertex_id simplex[4])
+{
+  if(orientation(mesh.point(simplex[0]), mesh.point(simplex[1]), mesh.point(simplex[2]),
+                 mesh.point(simplex[3])) < 0)
+    std::swap(simplex[2], simplex[3]);
+  mesh.free_tets.clear();
+  mesh.tets.clear();
+  mesh.tet_sub_determinants.clear();
+  for(int t = 0; t < 5; ++t) mesh.new_tet();
+  for(int i = 0; i < 4; ++i) mesh.vertex_ids(0)[i] = simplex[i];
+  // The ghost f + 1 on facet f sees that facet from outside: (a, b, c, ghost)
+  // with (a, b, c) = facet_vertex[f], an even permutation of the reversed
+  // facet.  Its facet i < 3, opposite simplex[k] with k = facet_vertex[f][i],
+  // holds the ghost and the edge that facet f shares with facet k: it is the
+  // facet of ghost k + 1 opposite simplex[f].
+  for(int f = 0; f < 4; ++f) {
+    Vertex_id* g = mesh.vertex_ids(f + 1);
+    for(int i = 0; i < 3; ++i) g[i] = simplex[facet_vertex[f][i]];
+    g[3] = ghost_vertex;
+    mesh.tets[0].n[f] = facet_code(f + 1, 3);
+    mesh.tets[f + 1].n[3] = facet_code(0, f);
+    for(int i = 0; i < 3; ++i) {
+      const int k = facet_vertex[f][i];
+      const int j = static_cast<int>(std::find(facet_vertex[k], facet_vertex[k] + 3, f) - facet_vertex[k]);
+      mesh.tets[f + 1].n[i] = facet_code(k + 1, j);
+    }
+  }
+  if(mesh.with_sub_determinants)
+    for(Tet_id t = 0; t < 5; ++t) update_sub_determinants(mesh, t);
+  mesh.live_tets = 5;
+  mesh.ghost_tets = 4;
+}
+
 // Which tetrahedra a kernel may walk through, delete and refill (paper §3.2).
 // Sequentially, all of them.
 struct Sequential_ownership

@@ -23,6 +23,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_displacement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_removal.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Walk_start_grid.h>
 
@@ -358,10 +359,12 @@ public:
       dimension = lower.delaunay().dimension();
       return;
     }
-    Removal_hole hole;
+    Removal_hole& hole = removal_.hole;
     carve_hole(mesh, v, start, hole);
-    if(!link_is_coplanar(mesh, hole)) {
-      fill_hole_from_link(hole, new_cells);
+    if(removal_.link.build(mesh, hole.link)) {
+      if(!fill_hole_with_link_cells(mesh, hole, removal_.link.mesh(), removal_.filling, new_cells))
+        throw std::logic_error("Fast_Delaunay_triangulation_3: a facet of the hole of a removed vertex is not in "
+                               "the Delaunay triangulation of its link");
     } else if(hole.finite_star == mesh.live_tets - mesh.ghost_tets) {
       // Every finite tetrahedron has v and the others are coplanar.
       mesh.kill_vertex(v);
@@ -393,6 +396,60 @@ public:
     for(Tet_id t : made)
       if(t < mesh.number_of_slots() && mesh.is_live(t)) new_cells.push_back(t);
     return moved;
+  }
+
+  // Moves live vertex v (dimension 3; `start` a tetrahedron of v) to p when
+  // p stays in the star of v (Vertex_displacement.h): in place if the star
+  // is still Delaunay with p for v's point (`new_cells`: the tetrahedra of v,
+  // in their slots), else by re-triangulating the star and the tetrahedra in
+  // conflict with p beyond it from their vertices and p at once
+  // (Vertex_removal.h), which costs about one removal.  Otherwise returns
+  // false and changes nothing: the caller removes v and inserts p.
+  bool move_within_star(Vertex_id v, const double* p, Tet_id start, std::vector<Tet_id>& new_cells)
+  {
+    CGAL_precondition(dimension == 3 && v < vertex_slots() && !mesh.is_dead(v));
+    new_cells.clear();
+    Removal_hole& hole = removal_.hole;
+    carve_hole(mesh, v, start, hole);
+    const Displacement displacement = classify_displacement(mesh, v, p, hole.star);
+    if(displacement == Displacement::elsewhere) return false;
+    if(displacement == Displacement::inside_star) {
+      add_conflicts_of_moved_point(mesh, v, p, hole);
+      if(!removal_.link.build(mesh, hole.link, p)) return false;
+    }
+    double old_point[3];
+    for(int a = 0; a < 3; ++a) {
+      old_point[a] = mesh.vertices[v].xyz[a];
+      mesh.vertices[v].xyz[a] = p[a];
+    }
+    if(displacement == Displacement::keeps_cells) {
+      new_cells.assign(hole.star.begin(), hole.star.end());
+      if(mesh.with_sub_determinants)
+        for(Tet_id t : new_cells) update_sub_determinants(mesh, t);
+    } else {
+      hole.inner = v;
+      if(!fill_hole_with_link_cells(mesh, hole, removal_.link.mesh(), removal_.filling, new_cells)) {
+        // Ruled out by the uniqueness of the perturbed triangulation; nothing
+        // has changed but v's point.
+        CGAL_assertion_msg(false, "a facet of the star of a moved vertex is not in the triangulation of its "
+                                  "link and new point");
+        for(int a = 0; a < 3; ++a) mesh.vertices[v].xyz[a] = old_point[a];
+        return false;
+      }
+    }
+    extend_bounding_box_with(v);
+    hint_ = new_cells.front();
+    return true;
+  }
+
+  // Whether moving live vertex v (dimension 3) to p keeps every cell but
+  // v's point (CGAL's is_delaunay_after_displacement).
+  bool stays_delaunay_after_move(Vertex_id v, const double* p, Tet_id start) const
+  {
+    CGAL_precondition(dimension == 3 && v < vertex_slots() && !mesh.is_dead(v));
+    std::vector<Tet_id> star;
+    cells_around_vertex(mesh, start, v, star);
+    return classify_displacement(mesh, v, p, star) == Displacement::keeps_cells;
   }
 
   // Exact validity: combinatorics, orientation and the (perturbed) local
@@ -562,24 +619,6 @@ private:
       box_hi_[a] = std::max(box_hi_[a], mesh.vertices[v].xyz[a]);
     }
   }
-  // The Delaunay triangulation of the link of the hole (its points, in the
-  // same predicates and perturbation) fills the hole.
-  void fill_hole_from_link(const Removal_hole& hole, std::vector<Tet_id>& new_cells)
-  {
-    std::vector<double> xyz;
-    xyz.reserve(3 * hole.link.size());
-    for(Vertex_id w : hole.link) xyz.insert(xyz.end(), mesh.point(w), mesh.point(w) + 3);
-    Triangulation_core small;
-    small.set_sub_determinants(false);
-    std::vector<Vertex_id> small_of_link;
-    small.insert(xyz.data(), hole.link.size(), &small_of_link);
-    CGAL_assertion(small.dimension == 3 && small.number_of_vertices() == hole.link.size());
-    std::vector<Vertex_id> global_of_small(hole.link.size());
-    for(std::size_t k = 0; k < hole.link.size(); ++k) global_of_small[small_of_link[k]] = hole.link[k];
-    if(!fill_hole(mesh, hole, small.mesh, small_of_link, global_of_small, new_cells))
-      throw std::logic_error("Fast_Delaunay_triangulation_3: a facet of the hole of a removed vertex is not in "
-                             "the Delaunay triangulation of its link");
-  }
   void reset_bounding_box()
   {
     for(int a = 0; a < 3; ++a) {
@@ -716,50 +755,8 @@ private:
   // One finite tetrahedron and its four ghosts; adjacency by matching facets.
   void create_initial_tetrahedron(Vertex_id simplex[4])
   {
-    if(orientation(mesh.point(simplex[0]), mesh.point(simplex[1]), mesh.point(simplex[2]),
-                   mesh.point(simplex[3])) < 0)
-      std::swap(simplex[2], simplex[3]);
-    mesh.free_tets.clear();
-    mesh.tets.clear();
-    mesh.tet_sub_determinants.clear();
-    Tet_id tets[5];
-    for(Tet_id& t : tets) t = mesh.new_tet();
-    for(int i = 0; i < 4; ++i) mesh.vertex_ids(0)[i] = simplex[i];
-    // The ghost on facet f sees that facet from outside: (a, b, c, ghost) with
-    // (a, b, c) = facet_vertex[f], an even permutation of the reversed facet.
-    for(int f = 0; f < 4; ++f) {
-      Vertex_id* g = mesh.vertex_ids(f + 1);
-      for(int k = 0; k < 3; ++k) g[k] = simplex[facet_vertex[f][k]];
-      g[3] = ghost_vertex;
-    }
-    for(int t = 0; t < 5; ++t) {
-      for(int i = 0; i < 4; ++i) mesh.tets[t].n[i] = match_facet(t, i);
-      if(mesh.with_sub_determinants) update_sub_determinants(mesh, t);
-    }
-    mesh.live_tets = 5;
-    mesh.ghost_tets = 4;
+    make_initial_tetrahedron(mesh, simplex);
     hint_ = 0;
-  }
-
-  // Facet code among the first five tetrahedra sharing facet i of t.
-  Facet_code match_facet(int t, int i) const
-  {
-    Vertex_id mine[3];
-    for(int k = 0, j = 0; k < 4; ++k)
-      if(k != i) mine[j++] = mesh.vertex(t, k);
-    std::sort(mine, mine + 3);
-    for(int u = 0; u < 5; ++u) {
-      if(u == t) continue;
-      for(int j = 0; j < 4; ++j) {
-        Vertex_id other[3];
-        for(int k = 0, l = 0; k < 4; ++k)
-          if(k != j) other[l++] = mesh.vertex(u, k);
-        std::sort(other, other + 3);
-        if(std::equal(mine, mine + 3, other)) return facet_code(u, j);
-      }
-    }
-    CGAL_assertion_msg(false, "initial tetrahedra do not close up");
-    return 0;
   }
 
   // Drops the duplicate vertex records of the last insertion, renumbering
@@ -804,6 +801,13 @@ private:
   std::vector<Tet_id> single_ball_;
   double box_lo_[3], box_hi_[3];
   std::size_t progress_total_ = 0, progress_done_ = 0;
+  // Kept from one removal to the next (Vertex_removal.h).
+  struct Removal_buffers
+  {
+    Removal_hole hole;
+    Link_triangulation link;
+    Hole_filling_buffers filling;
+  } removal_;
 };
 
 inline bool Triangulation_core::is_valid(std::string* why) const

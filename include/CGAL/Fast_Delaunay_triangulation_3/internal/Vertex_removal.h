@@ -15,14 +15,15 @@
 //
 //   1. carve_hole: the star, the link, and each boundary facet with the
 //      neighbour outside the hole and its vertices oriented as seen from v;
-//   2. the caller triangulates the link's points (Triangulation_core);
-//   3. fill_hole: each boundary facet is found in the small triangulation,
-//      oriented the same way, which picks the small cell on v's side; a flood
-//      from those cells across the facets that are not boundary facets
-//      collects the cells of the hole, copied into the freed slots and glued
-//      to the outside neighbours.  The small ghost is our ghost: the copied
-//      ghost tetrahedra keep it in slot 3, the small ones being oriented as
-//      ours.
+//   2. Link_triangulation: the Delaunay triangulation of the link's points,
+//      in arrays kept from one removal to the next;
+//   3. fill_hole_with_link_cells: each boundary facet is found in the small
+//      triangulation, oriented the same way, which picks the small cell on
+//      v's side; a flood from those cells across the facets that are not
+//      boundary facets collects the cells of the hole, copied into the freed
+//      slots and glued to the outside neighbours.  The small ghost is our
+//      ghost: the copied ghost tetrahedra keep it in slot 3, the small ones
+//      being oriented as ours.
 //
 // One case has no 3D small triangulation: v on the hull whose finite link
 // vertices are coplanar (a pyramid's apex).  All remaining points are then
@@ -41,6 +42,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -67,45 +70,114 @@ inline Oriented_facet_key oriented_facet_key(const Flat_storage& m, Tet_id t, in
                             m.vertex(t, facet_vertex[f][2]));
 }
 
+// The hole of a removed vertex v.  Its vertices are named by link ids: k for
+// link[k], link.size() for `inner` (a moved v's new place, if any, inside the
+// hole), and ghost_vertex for the ghost (larger than every link id).
 struct Removal_hole
 {
   struct Boundary_facet
   {
-    Oriented_facet_key key; // as seen from the hole (facing away from v)
+    Oriented_facet_key key; // link ids, as seen from the hole (facing away from v)
     Facet_code outside;     // the facet of the tetrahedron beyond it
   };
   std::vector<Tet_id> star;
   std::vector<Vertex_id> link;      // finite vertices of the star but v
   std::vector<Boundary_facet> boundary;
   std::size_t finite_star = 0;      // tetrahedra of the star without the ghost
+  Vertex_id inner = ghost_vertex;   // a vertex inside the hole, or ghost_vertex
+
+  Vertex_id global_id(Vertex_id link_id) const
+  {
+    return link_id == ghost_vertex ? ghost_vertex : link_id == link.size() ? inner : link[link_id];
+  }
 };
 
-// The star of v (start has v), its link and its boundary facets.
-inline void carve_hole(const Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole& hole)
+// The star of v (start has v), its link and its boundary facets.  The link's
+// vertices hold their link id + 1 in their scratch words meanwhile (0 at
+// rest, as the kernel requires), 0 again on return.
+inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole& hole)
 {
   cells_around_vertex(m, start, v, hole.star);
-  vertices_around_vertex(m, hole.star, v, hole.link, nullptr);
-  hole.link.erase(std::remove(hole.link.begin(), hole.link.end(), ghost_vertex), hole.link.end());
+  hole.link.clear();
   hole.boundary.clear();
   hole.finite_star = 0;
+  hole.inner = ghost_vertex;
+  auto link_id = [&](Vertex_id w) {
+    if(w == ghost_vertex) return ghost_vertex;
+    auto& number = m.vertices[w].scratch;
+    if(number == 0) {
+      hole.link.push_back(w);
+      number = static_cast<Vertex_id>(hole.link.size());
+    }
+    return static_cast<Vertex_id>(number - 1);
+  };
+  // Every vertex of the link is on the facet opposite v of a tetrahedron of
+  // the star.
   for(Tet_id t : hole.star) {
     if(!m.is_ghost(t)) ++hole.finite_star;
     const int i = index_of(m, t, v);
-    hole.boundary.push_back({oriented_facet_key(m, t, i), m.neighbor_code(t, i)});
+    const Vertex_id a = link_id(m.vertex(t, facet_vertex[i][0]));
+    const Vertex_id b = link_id(m.vertex(t, facet_vertex[i][1]));
+    const Vertex_id c = link_id(m.vertex(t, facet_vertex[i][2]));
+    hole.boundary.push_back({oriented_facet_key(a, b, c), m.neighbor_code(t, i)});
   }
+  for(Vertex_id w : hole.link) m.vertices[w].scratch = 0;
 }
 
-// Whether the link's vertices lie in one plane (exact).
-inline bool link_is_coplanar(const Flat_storage& m, const Removal_hole& hole)
+// The hole of a move of v to p in the kernel of the star of v (v not on the
+// hull), carved as for a removal: the tetrahedra beyond the star whose
+// spheres hold p go too, since the triangulation with p has none of them.
+// They are found from the star's boundary across tetrahedra in conflict
+// with p (the conflict zone of p is connected and meets the star, which
+// holds p).  Every other tetrahedron has an empty sphere without v and
+// with p, so it stays; the hole's link then gets every vertex of its
+// tetrahedra but v, its boundary the facets towards the others.
+inline void add_conflicts_of_moved_point(Flat_storage& m, Vertex_id v, const double* p, Removal_hole& hole)
 {
-  const std::vector<Vertex_id>& l = hole.link;
-  CGAL_precondition(l.size() >= 3);
-  std::size_t third = 2;
-  while(third < l.size() && collinear(m.point(l[0]), m.point(l[1]), m.point(l[third]))) ++third;
-  if(third == l.size()) return true;
-  for(std::size_t k = 2; k < l.size(); ++k)
-    if(orientation(m.point(l[0]), m.point(l[1]), m.point(l[third]), m.point(l[k])) != 0) return false;
-  return true;
+  Id_set in_conflict, tested;
+  auto conflicts = [&](Tet_id u) {
+    if(index_of(m, u, v) >= 0 || !tested.insert(u)) return false;
+    const Vertex_id* uv = m.vertex_ids(u);
+    const bool yes = uv[3] == ghost_vertex
+                         ? ghost_cell_in_conflict(m.point(uv[0]), m.point(uv[1]), m.point(uv[2]), p)
+                         : finite_cell_in_conflict(m.point(uv[0]), m.point(uv[1]), m.point(uv[2]), m.point(uv[3]), p);
+    if(yes) in_conflict.insert(u);
+    return yes;
+  };
+  const std::size_t star_size = hole.star.size();
+  for(std::size_t k = 0; k < star_size; ++k) {
+    const Tet_id u = tet_of(hole.boundary[k].outside);
+    if(conflicts(u)) hole.star.push_back(u);
+  }
+  if(hole.star.size() == star_size) return;
+  for(std::size_t k = star_size; k < hole.star.size(); ++k)
+    for(int f = 0; f < 4; ++f) {
+      const Tet_id u = m.neighbor(hole.star[k], f);
+      if(conflicts(u)) hole.star.push_back(u);
+    }
+  hole.link.clear();
+  hole.boundary.clear();
+  auto link_id = [&](Vertex_id w) {
+    if(w == ghost_vertex) return ghost_vertex;
+    auto& number = m.vertices[w].scratch;
+    if(number == 0) {
+      hole.link.push_back(w);
+      number = static_cast<Vertex_id>(hole.link.size());
+    }
+    return static_cast<Vertex_id>(number - 1);
+  };
+  for(Tet_id t : hole.star) {
+    Vertex_id id[4];
+    for(int i = 0; i < 4; ++i) id[i] = m.vertex(t, i) == v ? v : link_id(m.vertex(t, i));
+    for(int f = 0; f < 4; ++f) {
+      const Tet_id u = m.neighbor(t, f);
+      if(index_of(m, u, v) >= 0 || in_conflict.contains(u)) continue;
+      hole.boundary.push_back(
+          {oriented_facet_key(id[facet_vertex[f][0]], id[facet_vertex[f][1]], id[facet_vertex[f][2]]),
+           m.neighbor_code(t, f)});
+    }
+  }
+  for(Vertex_id w : hole.link) m.vertices[w].scratch = 0;
 }
 
 namespace vertex_removal_detail {
@@ -129,95 +201,176 @@ inline void count_in(Flat_storage& m, Tet_id t)
 
 } // namespace vertex_removal_detail
 
-// Fills the hole with the cells of `small` (a dimension-3 triangulation of
-// the link's points: link[k] is its vertex small_of_link[k], and
-// global_of_small the inverse) on v's side of the boundary.  Writes the new
-// slots to new_cells.  Returns false, changing nothing, if a boundary facet
-// is not in `small` (which the uniqueness of the perturbed triangulation
-// rules out).
-inline bool fill_hole(Flat_storage& m, const Removal_hole& hole, const Flat_storage& small,
-                      const std::vector<Vertex_id>& small_of_link, const std::vector<Vertex_id>& global_of_small,
-                      std::vector<Tet_id>& new_cells)
+// The Delaunay triangulation of the link's points (its vertex k is link[k]),
+// by the same kernel and predicates as the big one, in arrays kept from one
+// removal to the next: a removal re-triangulates some fifteen points, for
+// which the general insertion path's sort, buffers and lower-dimensional
+// start cost more than the insertions themselves.
+class Link_triangulation
 {
-  // Boundary facets in the small ids (the ghost as `ghost`, larger than all),
-  // bucketed by their first id: each small facet is compared with the few
-  // of its bucket (a binary search over all of them mispredicted at every
-  // step: a third of the removal's time).  The link vertices' scratch words
-  // hold their small ids meanwhile; they are 0 again before returning.
-  const Vertex_id ghost = static_cast<Vertex_id>(hole.link.size());
-  for(std::size_t k = 0; k < hole.link.size(); ++k) m.vertices[hole.link[k]].scratch = small_of_link[k];
-  auto small_id = [&](Vertex_id g) { return g == ghost_vertex ? ghost : static_cast<Vertex_id>(m.vertices[g].scratch); };
-  struct Rest_of_key
+public:
+  Link_triangulation() { small_.with_sub_determinants = false; }
+
+  // False, with nothing built, if the points are coplanar (exact).  `inner`,
+  // if not null, is one more point (vertex link.size()), inside the hole.
+  bool build(const Flat_storage& m, const std::vector<Vertex_id>& link, const double* inner = nullptr)
   {
-    Vertex_id second, third;
-    int boundary;
-  };
-  std::vector<std::uint32_t> bucket(ghost + 2, 0);
-  std::vector<Oriented_facet_key> keys(hole.boundary.size());
-  for(std::size_t b = 0; b < hole.boundary.size(); ++b) {
-    const Oriented_facet_key& g = hole.boundary[b].key;
-    keys[b] = oriented_facet_key(small_id(g[0]), small_id(g[1]), small_id(g[2]));
-    ++bucket[keys[b][0] + 1];
-  }
-  for(std::size_t k = 0; k < hole.link.size(); ++k) m.vertices[hole.link[k]].scratch = 0;
-  for(std::size_t i = 1; i < bucket.size(); ++i) bucket[i] += bucket[i - 1];
-  std::vector<Rest_of_key> rest(hole.boundary.size());
-  {
-    std::vector<std::uint32_t> next(bucket.begin(), bucket.end() - 1);
-    for(std::size_t b = 0; b < keys.size(); ++b) rest[next[keys[b][0]]++] = {keys[b][1], keys[b][2], static_cast<int>(b)};
+    small_.clear();
+    const std::size_t n = link.size() + (inner != nullptr);
+    if(n < 4) return false;
+    small_.vertices.resize(n);
+    double lo[3], hi[3];
+    for(int a = 0; a < 3; ++a) {
+      lo[a] = std::numeric_limits<double>::infinity();
+      hi[a] = -lo[a];
+    }
+    for(std::size_t k = 0; k < n; ++k) {
+      Vertex_record& r = small_.vertices[k];
+      const double* q = k < link.size() ? m.point(link[k]) : inner;
+      for(int a = 0; a < 3; ++a) {
+        r.xyz[a] = q[a];
+        lo[a] = std::min(lo[a], q[a]);
+        hi[a] = std::max(hi[a], q[a]);
+      }
+      r.scratch = 0;
+    }
+    Vertex_id simplex[4];
+    if(!find_simplex(simplex)) return false;
+    make_initial_tetrahedron(small_, simplex);
+    Delaunay_kernel<> kernel(small_, scratch_, Mesh_slots{&small_}, Static_filter::for_box(lo, hi));
+    Tet_id hint = 0;
+    for(Vertex_id k = 0; k < n; ++k) {
+      if(std::find(simplex, simplex + 4, k) != simplex + 4) continue;
+      Vertex_id existing = ghost_vertex;
+      const Insertion_result inserted = kernel.insert(k, hint, existing);
+      CGAL_assertion(inserted == Insertion_result::inserted); // the link's points are distinct
+      (void)inserted;
+    }
+    small_.live_tets += scratch_.live_delta;
+    small_.ghost_tets += scratch_.ghost_delta;
+    scratch_.live_delta = scratch_.ghost_delta = 0;
+    scratch_.stats = Kernel_statistics();
+    return true;
   }
 
-  // boundary_of[code of a small facet]: the hole's boundary facet it is, or -1.
-  std::vector<int> boundary_of(4 * small.number_of_slots(), -1);
-  std::vector<Tet_id> inside; // small cells of the hole
-  std::vector<char> reached(small.number_of_slots(), 0);
-  std::size_t found = 0;
-  for(Tet_id s = 0; s < small.number_of_slots(); ++s) {
+  const Flat_storage& mesh() const { return small_; }
+
+private:
+  // Four points spanning 3D, the first two being 0 and 1; false if there are
+  // none, that is if all are coplanar.
+  bool find_simplex(Vertex_id simplex[4]) const
+  {
+    const Vertex_id n = static_cast<Vertex_id>(small_.vertices.size());
+    for(Vertex_id c = 2; c < n; ++c)
+      for(Vertex_id d = 2; d < n; ++d)
+        if(d != c && orientation(small_.point(0), small_.point(1), small_.point(c), small_.point(d)) != 0) {
+          simplex[0] = 0;
+          simplex[1] = 1;
+          simplex[2] = c;
+          simplex[3] = d;
+          return true;
+        }
+    return false;
+  }
+
+  Flat_storage small_;
+  Insertion_scratch scratch_;
+};
+
+// The buffers of fill_hole_with_link_cells, kept from one removal to the next.
+struct Hole_filling_buffers
+{
+  std::vector<std::uint32_t> bucket_start;            // boundary facets by their first link id
+  std::vector<std::array<Vertex_id, 3>> second_third; // their other two link ids and their index
+  std::vector<Tet_id> inside;                          // small cells in the hole
+  std::vector<std::array<int, 4>> boundary_of;         // per inside cell, per facet: boundary index or -1
+  std::vector<char> reached;                           // per small slot
+  std::vector<Tet_id> slot_of;                         // per small slot: its new tetrahedron
+};
+
+// Fills the hole with the cells of `small` (the link's triangulation) on v's
+// side of the boundary.  Writes the new slots to new_cells.  Returns false,
+// changing nothing, if a boundary facet is not in `small` (which the
+// uniqueness of the perturbed triangulation rules out).
+//
+// The cells in the hole are found by a flood from one cell with a boundary
+// facet, across the facets that are not boundary facets: each facet of a
+// cell in the hole is looked up once among the boundary facets of its first
+// vertex (two on average), and the cells outside the hole are not looked at.
+inline bool fill_hole_with_link_cells(Flat_storage& m, const Removal_hole& hole, const Flat_storage& small,
+                                      Hole_filling_buffers& b, std::vector<Tet_id>& new_cells)
+{
+  const std::size_t link_size = hole.link.size() + (hole.inner != ghost_vertex);
+  b.bucket_start.assign(link_size + 1, 0);
+  for(const Removal_hole::Boundary_facet& f : hole.boundary) ++b.bucket_start[f.key[0] + 1];
+  for(std::size_t i = 1; i <= link_size; ++i) b.bucket_start[i] += b.bucket_start[i - 1];
+  b.second_third.resize(hole.boundary.size());
+  for(std::size_t k = 0; k < hole.boundary.size(); ++k) {
+    const Oriented_facet_key& key = hole.boundary[k].key;
+    b.second_third[b.bucket_start[key[0]]++] = {{key[1], key[2], static_cast<Vertex_id>(k)}};
+  }
+  // The loop above moved each start to the next bucket's: shift them back.
+  for(std::size_t i = link_size; i > 0; --i) b.bucket_start[i] = b.bucket_start[i - 1];
+  b.bucket_start[0] = 0;
+  // The boundary facet that facet f of small cell s is, or -1.
+  auto boundary_index = [&](Tet_id s, int f) {
+    const Oriented_facet_key key = oriented_facet_key(small, s, f);
+    for(std::uint32_t r = b.bucket_start[key[0]]; r < b.bucket_start[key[0] + 1]; ++r)
+      if(b.second_third[r][0] == key[1] && b.second_third[r][1] == key[2]) return static_cast<int>(b.second_third[r][2]);
+    return -1;
+  };
+
+  b.inside.clear();
+  b.boundary_of.clear();
+  b.reached.assign(small.number_of_slots(), 0);
+  for(Tet_id s = 0; s < small.number_of_slots() && b.inside.empty(); ++s) {
     if(!small.is_live(s)) continue;
-    for(int f = 0; f < 4; ++f) {
-      Vertex_id v[3];
-      for(int k = 0; k < 3; ++k) {
-        const Vertex_id w = small.vertex(s, facet_vertex[f][k]);
-        v[k] = w == ghost_vertex ? ghost : w;
-      }
-      const Oriented_facet_key key = oriented_facet_key(v[0], v[1], v[2]);
-      for(std::uint32_t r = bucket[key[0]]; r < bucket[key[0] + 1]; ++r) {
-        if(rest[r].second != key[1] || rest[r].third != key[2]) continue;
-        boundary_of[facet_code(s, f)] = rest[r].boundary;
-        ++found;
-        if(!reached[s]) { reached[s] = 1; inside.push_back(s); }
+    for(int f = 0; f < 4; ++f)
+      if(boundary_index(s, f) >= 0) {
+        b.inside.push_back(s);
+        b.reached[s] = 1;
         break;
       }
+  }
+  std::size_t found = 0;
+  for(std::size_t k = 0; k < b.inside.size(); ++k) {
+    const Tet_id s = b.inside[k];
+    std::array<int, 4> across;
+    for(int f = 0; f < 4; ++f) {
+      across[f] = boundary_index(s, f);
+      if(across[f] >= 0) {
+        ++found;
+        continue;
+      }
+      const Tet_id u = small.neighbor(s, f);
+      if(!b.reached[u]) {
+        b.reached[u] = 1;
+        b.inside.push_back(u);
+      }
     }
+    b.boundary_of.push_back(across);
   }
   if(found != hole.boundary.size()) return false;
-  for(std::size_t k = 0; k < inside.size(); ++k)
-    for(int f = 0; f < 4; ++f) {
-      if(boundary_of[facet_code(inside[k], f)] >= 0) continue;
-      const Tet_id u = small.neighbor(inside[k], f);
-      if(!reached[u]) { reached[u] = 1; inside.push_back(u); }
-    }
 
   vertex_removal_detail::free_star(m, hole);
-  std::vector<Tet_id> slot_of(small.number_of_slots(), 0);
+  b.slot_of.resize(small.number_of_slots());
   new_cells.clear();
-  for(Tet_id s : inside) {
-    slot_of[s] = m.new_tet();
-    new_cells.push_back(slot_of[s]);
+  for(Tet_id s : b.inside) {
+    b.slot_of[s] = m.new_tet();
+    new_cells.push_back(b.slot_of[s]);
   }
-  for(Tet_id s : inside) {
-    const Tet_id t = slot_of[s];
+  for(std::size_t k = 0; k < b.inside.size(); ++k) {
+    const Tet_id s = b.inside[k], t = b.slot_of[s];
     for(int i = 0; i < 4; ++i) {
-      const Vertex_id w = small.vertex(s, i);
-      m.tets[t].v[i] = w == ghost_vertex ? ghost_vertex : global_of_small[w];
-      const int b = boundary_of[facet_code(s, i)];
-      if(b >= 0) {
-        const Facet_code outside = hole.boundary[b].outside;
+      m.tets[t].v[i] = hole.global_id(small.vertex(s, i));
+      const int f = b.boundary_of[k][i];
+      if(f >= 0) {
+        const Facet_code outside = hole.boundary[f].outside;
         m.tets[t].n[i] = outside;
         m.neighbor_code(outside) = facet_code(t, i);
       } else {
         const Facet_code across = small.neighbor_code(s, i);
-        m.tets[t].n[i] = facet_code(slot_of[tet_of(across)], facet_of(across));
+        m.tets[t].n[i] = facet_code(b.slot_of[tet_of(across)], facet_of(across));
       }
     }
   }
@@ -241,7 +394,7 @@ inline void fill_flat_hole(Flat_storage& m, const Removal_hole& hole, std::vecto
   for(const Removal_hole::Boundary_facet& b : hole.boundary) {
     const int g = static_cast<int>(std::find(b.key.begin(), b.key.end(), ghost_vertex) - b.key.begin());
     if(g < 3) {
-      const Vertex_id a = b.key[(g + 1) % 3], c = b.key[(g + 2) % 3];
+      const Vertex_id a = hole.global_id(b.key[(g + 1) % 3]), c = hole.global_id(b.key[(g + 2) % 3]);
       sides.push_back({{{std::min(a, c), std::max(a, c)}}, b.outside});
     } else {
       finite.push_back(&b);
@@ -255,7 +408,10 @@ inline void fill_flat_hole(Flat_storage& m, const Removal_hole& hole, std::vecto
     // The key faces away from v, which is now beyond the hull: reversed, it
     // is the base of a ghost on v's side.
     Vertex_id* v = m.tets[t].v;
-    v[0] = b->key[0]; v[1] = b->key[2]; v[2] = b->key[1]; v[3] = ghost_vertex;
+    v[0] = hole.global_id(b->key[0]);
+    v[1] = hole.global_id(b->key[2]);
+    v[2] = hole.global_id(b->key[1]);
+    v[3] = ghost_vertex;
     m.tets[t].n[3] = b->outside;
     m.neighbor_code(b->outside) = facet_code(t, 3);
     for(int i = 0; i < 3; ++i) {
