@@ -199,9 +199,17 @@ public:
     // splits a segment in place (the segment keeps its slot) or raises the
     // dimension (every cell is re-copied).
     std::vector<Reference_cell> deleted;
-    if(dimension_before == 2 && where.type != Delaunay::VERTEX && where.type != Delaunay::OUTSIDE_AFFINE_HULL)
-      delaunay_->find_conflicts(p, where.cell, Emptyset_iterator(), std::back_inserter(deleted));
-    const Reference_vertex r = delaunay_->insert(p, where.type, where.cell, where.li, where.lj);
+    Reference_vertex r;
+    if(dimension_before == 2 && where.type != Delaunay::VERTEX && where.type != Delaunay::OUTSIDE_AFFINE_HULL) {
+      // CGAL's insert(p, ...) there is find_conflicts and insert_in_hole:
+      // called apart, the conflict zone is searched once, not twice.
+      Delaunay::Facet boundary_edge;
+      delaunay_->find_conflicts(p, where.cell, Oneset_iterator<Delaunay::Facet>(boundary_edge),
+                                std::back_inserter(deleted));
+      r = delaunay_->insert_in_hole(p, deleted.begin(), deleted.end(), boundary_edge.first, boundary_edge.second);
+    } else {
+      r = delaunay_->insert(p, where.type, where.cell, where.li, where.lj);
+    }
     if(delaunay_->number_of_vertices() != vertices_before) {
       set_vertex(v, r);
       if(delaunay_->dimension() != dimension_before) copy_all_cells(m);
