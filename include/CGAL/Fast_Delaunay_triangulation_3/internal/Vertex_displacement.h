@@ -25,6 +25,7 @@
 #ifndef CGAL_FDT3_INTERNAL_VERTEX_DISPLACEMENT_H
 #define CGAL_FDT3_INTERNAL_VERTEX_DISPLACEMENT_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 
@@ -81,6 +82,12 @@ inline Displacement classify_displacement(const Flat_storage& m, Vertex_id v, co
     else if(orientation(at(tv[0]), at(tv[1]), at(tv[2]), at(tv[3])) <= 0) return Displacement::elsewhere;
   }
   const Displacement otherwise = on_hull ? Displacement::elsewhere : Displacement::inside_star;
+  // The far vertices beyond the star are met afresh: their loads overlap.
+  for(Tet_id t : star) {
+    const Facet_code beyond = m.neighbor_code(t, index_of(m, t, v));
+    const Vertex_id y = m.vertex(tet_of(beyond), facet_of(beyond));
+    if(y != ghost_vertex) __builtin_prefetch(m.point(y));
+  }
   for(Tet_id t : star) {
     for(int i = 0; i < 4; ++i) {
       const Facet_code across = m.neighbor_code(t, i);

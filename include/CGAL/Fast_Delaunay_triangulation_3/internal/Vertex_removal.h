@@ -120,6 +120,9 @@ inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole&
     const Vertex_id b = link_id(m.vertex(t, facet_vertex[i][1]));
     const Vertex_id c = link_id(m.vertex(t, facet_vertex[i][2]));
     hole.boundary.push_back({oriented_facet_key(a, b, c), m.neighbor_code(t, i)});
+    // The cells beyond the star are read later (their neighbour codes are
+    // rewritten; a move tests them): their loads overlap from here on.
+    __builtin_prefetch(m.vertex_ids(m.neighbor(t, i)));
   }
   for(Vertex_id w : hole.link) m.vertices[w].scratch = 0;
 }
