@@ -92,9 +92,31 @@ struct Removal_hole
   }
 };
 
-// The star of v (start has v), its link and its boundary facets.  The link's
-// vertices hold their link id + 1 in their scratch words meanwhile (0 at
-// rest, as the kernel requires), 0 again on return.
+// Numbers vertices in the order they are met (their link ids), appending
+// them to `link`: the scratch word of each holds its link id + 1 meanwhile
+// (0 at rest, as the kernel requires), 0 again after finish().
+struct Link_numbering
+{
+  Flat_storage& m;
+  std::vector<Vertex_id>& link;
+
+  Vertex_id operator()(Vertex_id w)
+  {
+    if(w == ghost_vertex) return ghost_vertex;
+    auto& number = m.vertices[w].scratch;
+    if(number == 0) {
+      link.push_back(w);
+      number = static_cast<Vertex_id>(link.size());
+    }
+    return static_cast<Vertex_id>(number - 1);
+  }
+  void finish()
+  {
+    for(Vertex_id w : link) m.vertices[w].scratch = 0;
+  }
+};
+
+// The star of v (start has v), its link and its boundary facets.
 inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole& hole)
 {
   cells_around_vertex(m, start, v, hole.star);
@@ -102,15 +124,7 @@ inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole&
   hole.boundary.clear();
   hole.finite_star = 0;
   hole.inner = ghost_vertex;
-  auto link_id = [&](Vertex_id w) {
-    if(w == ghost_vertex) return ghost_vertex;
-    auto& number = m.vertices[w].scratch;
-    if(number == 0) {
-      hole.link.push_back(w);
-      number = static_cast<Vertex_id>(hole.link.size());
-    }
-    return static_cast<Vertex_id>(number - 1);
-  };
+  Link_numbering link_id{m, hole.link};
   // Every vertex of the link is on the facet opposite v of a tetrahedron of
   // the star.
   for(Tet_id t : hole.star) {
@@ -124,7 +138,7 @@ inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole&
     // rewritten; a move tests them): their loads overlap from here on.
     __builtin_prefetch(m.vertex_ids(m.neighbor(t, i)));
   }
-  for(Vertex_id w : hole.link) m.vertices[w].scratch = 0;
+  link_id.finish();
 }
 
 // The hole of a move of v to p in the kernel of the star of v (v not on the
@@ -160,15 +174,7 @@ inline void add_conflicts_of_moved_point(Flat_storage& m, Vertex_id v, const dou
     }
   hole.link.clear();
   hole.boundary.clear();
-  auto link_id = [&](Vertex_id w) {
-    if(w == ghost_vertex) return ghost_vertex;
-    auto& number = m.vertices[w].scratch;
-    if(number == 0) {
-      hole.link.push_back(w);
-      number = static_cast<Vertex_id>(hole.link.size());
-    }
-    return static_cast<Vertex_id>(number - 1);
-  };
+  Link_numbering link_id{m, hole.link};
   for(Tet_id t : hole.star) {
     Vertex_id id[4];
     for(int i = 0; i < 4; ++i) id[i] = m.vertex(t, i) == v ? v : link_id(m.vertex(t, i));
@@ -180,7 +186,7 @@ inline void add_conflicts_of_moved_point(Flat_storage& m, Vertex_id v, const dou
            m.neighbor_code(t, f)});
     }
   }
-  for(Vertex_id w : hole.link) m.vertices[w].scratch = 0;
+  link_id.finish();
 }
 
 namespace vertex_removal_detail {
