@@ -824,11 +824,11 @@ public:
   // its handle and info kept (its cells are new, with Info()).  In dimension
   // 3, when the cells of v with p for its point are still the Delaunay
   // triangulation (is_delaunay_after_displacement), only the point changes
-  // and the cells of v keep their slots; when p is elsewhere in the star of
-  // v and in conflict with no cell beyond it, the star is re-triangulated
-  // from its link and p; otherwise v is removed and inserted again under the
-  // same id.  A NaN or infinite coordinate throws std::invalid_argument,
-  // nothing changed.
+  // and the cells of v keep their slots; when v is not on the hull and p is
+  // in the kernel of its star, the star and the cells beyond it in conflict
+  // with p are re-triangulated from their vertices and p at once; otherwise
+  // v is removed and inserted again under the same id.  A NaN or infinite
+  // coordinate throws std::invalid_argument, nothing changed.
   Vertex_handle move_if_no_collision(Vertex_handle v, const Point& p)
   {
     std::vector<Tet_id> made;
