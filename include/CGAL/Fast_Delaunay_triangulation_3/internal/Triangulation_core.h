@@ -752,7 +752,7 @@ private:
     return spanned;
   }
 
-  // One finite tetrahedron and its four ghosts; adjacency by matching facets.
+  // One finite tetrahedron and its four ghosts (make_initial_tetrahedron).
   void create_initial_tetrahedron(Vertex_id simplex[4])
   {
     make_initial_tetrahedron(mesh, simplex);
