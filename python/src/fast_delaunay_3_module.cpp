@@ -630,51 +630,52 @@ py::tuple mesh_arrays(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh)
   return py::make_tuple(points, tets, subdomains);
 }
 
+// How index_rows names an array in its messages: "<function>: <array> must
+// be ...", "<function>: <row> K has vertex index I, not a row of <rows_of>".
+struct Index_array_names
+{
+  const char* function;
+  const char* array;
+  const char* row;
+  const char* rows_of;
+};
+
+// The rows of an (m, K) integer array, each an index into `rows` rows.
+template <class Index, std::size_t K>
+std::vector<std::array<Index, K>> index_rows(const py::handle& given, std::size_t rows, const Index_array_names& names)
+{
+  const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(given);
+  if(!a || a.ndim() != 2 || a.shape(1) != static_cast<py::ssize_t>(K))
+    throw py::value_error(std::string(names.function) + ": " + names.array + " must be an (m, " + std::to_string(K) +
+                          ") integer array");
+  std::vector<std::array<Index, K>> out(static_cast<std::size_t>(a.shape(0)));
+  for(std::size_t k = 0; k < out.size(); ++k)
+    for(std::size_t i = 0; i < K; ++i) {
+      const std::int64_t index = a.data()[K * k + i];
+      if(index < 0 || static_cast<std::uint64_t>(index) >= rows)
+        throw py::value_error(std::string(names.function) + ": " + names.row + " " + std::to_string(k) +
+                              " has vertex index " + std::to_string(index) + ", not a row of " + names.rows_of +
+                              " (" + std::to_string(rows) + " rows)");
+      out[k][i] = static_cast<Index>(index);
+    }
+  return out;
+}
+
 py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py::object& size,
                const py::object& threads, bool optimize, const py::object& size_field)
 {
   const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize, size_field);
   const Double_array v = point_rows(vertices, "vertices");
-  const auto t = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
-  if(!t || t.ndim() != 2 || t.shape(1) != 3) throw py::value_error("mesh: triangles must be an (m, 3) integer array");
   std::vector<std::array<double, 3>> points(static_cast<std::size_t>(v.shape(0)));
   if(!points.empty()) std::copy(v.data(), v.data() + 3 * v.shape(0), &points[0][0]);
-  std::vector<std::array<std::size_t, 3>> tris(static_cast<std::size_t>(t.shape(0)));
-  for(py::ssize_t k = 0; k < t.shape(0); ++k)
-    for(int i = 0; i < 3; ++i) {
-      const std::int64_t index = t.data()[3 * k + i];
-      if(index < 0 || index >= v.shape(0))
-        throw py::value_error("mesh: triangle " + std::to_string(k) + " has vertex index " + std::to_string(index) +
-                              ", not a row of vertices (" + std::to_string(v.shape(0)) + " rows)");
-      tris[k][i] = static_cast<std::size_t>(index);
-    }
+  const auto tris =
+      index_rows<std::size_t, 3>(triangles, points.size(), {"mesh", "triangles", "triangle", "vertices"});
   CGAL::Fast_mesher_3::Tetrahedral_mesh result;
   {
     py::gil_scoped_release unlocked;
     result = CGAL::Fast_mesher_3::mesh_surfaces(points, tris, options);
   }
   return mesh_arrays(result);
-}
-
-// The rows of an (m, K) integer array, each an index into `rows` rows.
-template <std::size_t K>
-std::vector<std::array<std::uint32_t, K>> index_rows(const py::handle& given, std::size_t rows, const char* what)
-{
-  const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(given);
-  if(!a || a.ndim() != 2 || a.shape(1) != static_cast<py::ssize_t>(K))
-    throw py::value_error(std::string("improve_mesh: ") + what + " must be an (m, " + std::to_string(K) +
-                          ") integer array");
-  std::vector<std::array<std::uint32_t, K>> out(static_cast<std::size_t>(a.shape(0)));
-  for(std::size_t k = 0; k < out.size(); ++k)
-    for(std::size_t i = 0; i < K; ++i) {
-      const std::int64_t index = a.data()[K * k + i];
-      if(index < 0 || static_cast<std::uint64_t>(index) >= rows)
-        throw py::value_error(std::string("improve_mesh: ") + what + " row " + std::to_string(k) +
-                              " has vertex index " + std::to_string(index) + ", not a row of points (" +
-                              std::to_string(rows) + " rows)");
-      out[k][i] = static_cast<std::uint32_t>(index);
-    }
-  return out;
 }
 
 // improve_mesh(points, tets, subdomains, triangles, ...): the mesher's
@@ -693,7 +694,7 @@ py::tuple improve_mesh(const py::handle& points, const py::handle& tets, const p
   CGAL::Fast_mesher_3::Tetrahedral_mesh m;
   m.points.resize(static_cast<std::size_t>(v.shape(0)));
   if(!m.points.empty()) std::copy(v.data(), v.data() + 3 * v.shape(0), &m.points[0][0]);
-  m.tetrahedra = index_rows<4>(tets, m.points.size(), "tets");
+  m.tetrahedra = index_rows<std::uint32_t, 4>(tets, m.points.size(), {"improve_mesh", "tets", "tets row", "points"});
   if(subdomains.is_none()) {
     m.subdomain.assign(m.tetrahedra.size(), 1);
   } else {
@@ -701,7 +702,9 @@ py::tuple improve_mesh(const py::handle& points, const py::handle& tets, const p
     if(!s || s.ndim() != 1) throw py::value_error("improve_mesh: subdomains must be a 1-d integer array");
     m.subdomain.assign(s.data(), s.data() + s.shape(0)); // the count and the values are checked below
   }
-  if(!triangles.is_none()) m.triangles = index_rows<3>(triangles, m.points.size(), "triangles");
+  if(!triangles.is_none())
+    m.triangles = index_rows<std::uint32_t, 3>(triangles, m.points.size(),
+                                               {"improve_mesh", "triangles", "triangles row", "points"});
   CGAL::Fast_mesher_3::Improvement_statistics stats;
   {
     py::gil_scoped_release unlocked;

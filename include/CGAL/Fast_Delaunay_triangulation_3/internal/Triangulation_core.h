@@ -402,8 +402,9 @@ public:
   // p stays in the star of v (Vertex_displacement.h): in place if the star
   // is still Delaunay with p for v's point (`new_cells`: the tetrahedra of v,
   // in their slots), else by re-triangulating the star and the tetrahedra in
-  // conflict with p beyond it from their vertices and p at once
-  // (Vertex_removal.h), which costs about one removal.  Otherwise returns
+  // conflict with p beyond it from their vertices and p at once (the hole of
+  // Vertex_displacement.h, filled by Vertex_removal.h), which costs about one
+  // removal.  Otherwise returns
   // false and changes nothing: the caller removes v and inserts p.
   bool move_within_star(Vertex_id v, const double* p, Tet_id start, std::vector<Tet_id>& new_cells)
   {

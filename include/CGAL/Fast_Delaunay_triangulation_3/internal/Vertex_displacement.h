@@ -19,8 +19,9 @@
 // A move that passes costs a few dozen predicates instead of a removal and an
 // insertion.  Most small moves do not pass (11% of moves by a tenth of the
 // mean spacing, uniform points), but for most of them p is still in the
-// kernel of the star of v (83%): Vertex_removal.h then re-triangulates the
-// star and p's conflict zone at once.
+// kernel of the star of v (83%): add_conflicts_of_moved_point (below) then
+// makes the star and p's conflict zone one hole, which Vertex_removal.h fills
+// from the triangulation of its vertices and p.
 
 #ifndef CGAL_FDT3_INTERNAL_VERTEX_DISPLACEMENT_H
 #define CGAL_FDT3_INTERNAL_VERTEX_DISPLACEMENT_H
@@ -28,6 +29,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_removal.h>
 
 #include <vector>
 
@@ -105,6 +107,53 @@ inline Displacement classify_displacement(const Flat_storage& m, Vertex_id v, co
     }
   }
   return Displacement::keeps_cells;
+}
+
+// The hole of a move of v to p in the kernel of the star of v (v not on the
+// hull), carved as for a removal: the tetrahedra beyond the star whose
+// spheres hold p go too, since the triangulation with p has none of them.
+// They are found from the star's boundary across tetrahedra in conflict
+// with p (the conflict zone of p is connected and meets the star, which
+// holds p).  Every other tetrahedron has an empty sphere without v and
+// with p, so it stays; the hole's link then gets every vertex of its
+// tetrahedra but v, its boundary the facets towards the others.
+inline void add_conflicts_of_moved_point(Flat_storage& m, Vertex_id v, const double* p, Removal_hole& hole)
+{
+  using namespace vertex_displacement_detail;
+  const Displaced_points at{m, v, p}; // the cells tested do not have v
+  Id_set in_conflict_with_p, tested;
+  auto conflicts = [&](Tet_id u) {
+    if(index_of(m, u, v) >= 0 || !tested.insert(u)) return false;
+    const bool yes = in_conflict(m, u, p, at);
+    if(yes) in_conflict_with_p.insert(u);
+    return yes;
+  };
+  const std::size_t star_size = hole.star.size();
+  for(std::size_t k = 0; k < star_size; ++k) {
+    const Tet_id u = tet_of(hole.boundary[k].outside);
+    if(conflicts(u)) hole.star.push_back(u);
+  }
+  if(hole.star.size() == star_size) return;
+  for(std::size_t k = star_size; k < hole.star.size(); ++k)
+    for(int f = 0; f < 4; ++f) {
+      const Tet_id u = m.neighbor(hole.star[k], f);
+      if(conflicts(u)) hole.star.push_back(u);
+    }
+  hole.link.clear();
+  hole.boundary.clear();
+  Link_numbering link_id{m, hole.link};
+  for(Tet_id t : hole.star) {
+    Vertex_id id[4];
+    for(int i = 0; i < 4; ++i) id[i] = m.vertex(t, i) == v ? v : link_id(m.vertex(t, i));
+    for(int f = 0; f < 4; ++f) {
+      const Tet_id u = m.neighbor(t, f);
+      if(index_of(m, u, v) >= 0 || in_conflict_with_p.contains(u)) continue;
+      hole.boundary.push_back(
+          {oriented_facet_key(id[facet_vertex[f][0]], id[facet_vertex[f][1]], id[facet_vertex[f][2]]),
+           m.neighbor_code(t, f)});
+    }
+  }
+  link_id.finish();
 }
 
 } // namespace Fast_Delaunay_triangulation_3_internal

@@ -141,54 +141,6 @@ inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole&
   link_id.finish();
 }
 
-// The hole of a move of v to p in the kernel of the star of v (v not on the
-// hull), carved as for a removal: the tetrahedra beyond the star whose
-// spheres hold p go too, since the triangulation with p has none of them.
-// They are found from the star's boundary across tetrahedra in conflict
-// with p (the conflict zone of p is connected and meets the star, which
-// holds p).  Every other tetrahedron has an empty sphere without v and
-// with p, so it stays; the hole's link then gets every vertex of its
-// tetrahedra but v, its boundary the facets towards the others.
-inline void add_conflicts_of_moved_point(Flat_storage& m, Vertex_id v, const double* p, Removal_hole& hole)
-{
-  Id_set in_conflict, tested;
-  auto conflicts = [&](Tet_id u) {
-    if(index_of(m, u, v) >= 0 || !tested.insert(u)) return false;
-    const Vertex_id* uv = m.vertex_ids(u);
-    const bool yes = uv[3] == ghost_vertex
-                         ? ghost_cell_in_conflict(m.point(uv[0]), m.point(uv[1]), m.point(uv[2]), p)
-                         : finite_cell_in_conflict(m.point(uv[0]), m.point(uv[1]), m.point(uv[2]), m.point(uv[3]), p);
-    if(yes) in_conflict.insert(u);
-    return yes;
-  };
-  const std::size_t star_size = hole.star.size();
-  for(std::size_t k = 0; k < star_size; ++k) {
-    const Tet_id u = tet_of(hole.boundary[k].outside);
-    if(conflicts(u)) hole.star.push_back(u);
-  }
-  if(hole.star.size() == star_size) return;
-  for(std::size_t k = star_size; k < hole.star.size(); ++k)
-    for(int f = 0; f < 4; ++f) {
-      const Tet_id u = m.neighbor(hole.star[k], f);
-      if(conflicts(u)) hole.star.push_back(u);
-    }
-  hole.link.clear();
-  hole.boundary.clear();
-  Link_numbering link_id{m, hole.link};
-  for(Tet_id t : hole.star) {
-    Vertex_id id[4];
-    for(int i = 0; i < 4; ++i) id[i] = m.vertex(t, i) == v ? v : link_id(m.vertex(t, i));
-    for(int f = 0; f < 4; ++f) {
-      const Tet_id u = m.neighbor(t, f);
-      if(index_of(m, u, v) >= 0 || in_conflict.contains(u)) continue;
-      hole.boundary.push_back(
-          {oriented_facet_key(id[facet_vertex[f][0]], id[facet_vertex[f][1]], id[facet_vertex[f][2]]),
-           m.neighbor_code(t, f)});
-    }
-  }
-  link_id.finish();
-}
-
 namespace vertex_removal_detail {
 
 // Frees the star's slots and counts them out.
