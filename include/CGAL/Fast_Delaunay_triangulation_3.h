@@ -202,10 +202,6 @@ public:
 
 private:
   // Filters of the index iterators.
-  struct Accept_live_cell
-  {
-    bool operator()(const Anchor& a, Tet_id id) const { return a.core.mesh.is_live(id); }
-  };
   struct Accept_finite_cell
   {
     bool operator()(const Anchor& a, Tet_id id) const
@@ -219,8 +215,8 @@ private:
   };
 
 public:
-  typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell_handle, Tet_id, Accept_live_cell>
-      All_cells_iterator;
+  // As in CGAL, the handle is the iterator over all cells (Handles.h).
+  typedef Cell_handle All_cells_iterator;
   typedef Fast_Delaunay_triangulation_3_internal::Filtered_index_iterator<Cell_handle, Tet_id, Accept_finite_cell>
       Finite_cells_iterator;
   typedef All_cells_iterator Cell_iterator;
@@ -228,57 +224,10 @@ public:
       Finite_vertices_iterator;
 
   // All vertices: the infinite vertex first, then the finite ones (CGAL's
-  // order), skipping the records of removed vertices.
-  class All_vertices_iterator
-  {
-  public:
-    typedef std::bidirectional_iterator_tag iterator_category;
-    typedef decltype(*std::declval<const Vertex_handle&>()) reference;
-    typedef typename std::remove_reference<reference>::type value_type;
-    typedef value_type* pointer;
-    typedef std::ptrdiff_t difference_type;
-
-    All_vertices_iterator() = default;
-    All_vertices_iterator(const Anchor* tr, std::size_t position)
-        : position_(skip_dead(tr, position)), handle_(tr, id_at(position_)) {}
-    reference operator*() const { return *handle_; }
-    pointer operator->() const { return handle_.operator->(); }
-    operator Vertex_handle() const { return handle_; }
-    All_vertices_iterator& operator++()
-    {
-      position_ = skip_dead(handle_.owner(), position_ + 1);
-      handle_ = Vertex_handle(handle_.owner(), id_at(position_));
-      return *this;
-    }
-    All_vertices_iterator operator++(int) { All_vertices_iterator old = *this; ++*this; return old; }
-    All_vertices_iterator& operator--()
-    {
-      CGAL_precondition(position_ > 0);
-      --position_;
-      handle_ = Vertex_handle(handle_.owner(), id_at(position_));
-      return *this;
-    }
-    All_vertices_iterator operator--(int) { All_vertices_iterator old = *this; --*this; return old; }
-    friend bool operator==(const All_vertices_iterator& a, const All_vertices_iterator& b) { return a.position_ == b.position_; }
-    friend bool operator!=(const All_vertices_iterator& a, const All_vertices_iterator& b) { return a.position_ != b.position_; }
-
-  private:
-    static std::size_t skip_dead(const Anchor* tr, std::size_t position)
-    {
-      const auto& m = tr->core.mesh;
-      while(position > 0 && position <= m.vertices.size() && m.is_dead(static_cast<Vertex_id>(position - 1)))
-        ++position;
-      return position;
-    }
-    static Vertex_id id_at(std::size_t position)
-    {
-      return position == 0 ? Fast_Delaunay_triangulation_3_internal::ghost_vertex
-                           : static_cast<Vertex_id>(position - 1);
-    }
-    std::size_t position_ = 0;
-    Vertex_handle handle_;
-  };
-  typedef All_vertices_iterator Vertex_iterator;
+  // order), skipping the records of removed vertices.  As in CGAL, the
+  // handle is the iterator (Handles.h).
+  typedef Vertex_handle All_vertices_iterator;
+  typedef Vertex_handle Vertex_iterator;
 
   // Facets and edges are enumerated once each, from the cell of smallest
   // index among those that share them.  Both are bidirectional, as CGAL's:
@@ -511,6 +460,16 @@ public:
     std::swap(threads_, other.threads_);
   }
   void clear() { anchor_->clear(); }
+
+  // CGAL's way to name the infinite vertex after tds().copy_tds().  Ours is
+  // a fixed vertex of the arrays, which copy_tds() returns: only that one
+  // is accepted, anything else throws std::invalid_argument.
+  void set_infinite_vertex(Vertex_handle v)
+  {
+    if(v != infinite_vertex())
+      throw std::invalid_argument("Fast_Delaunay_triangulation_3::set_infinite_vertex: the infinite vertex is "
+                                  "fixed; only the vertex tds().copy_tds() returned can be given");
+  }
 
   // ---------------------------------------------------------------- options
   // Seed of the insertion order (the triangulation itself does not depend on it).
@@ -1568,16 +1527,20 @@ public:
   }
 
   // ---------------------------------------------------------------- iterators
-  All_cells_iterator all_cells_begin() const { return All_cells_iterator(anchor_.get(), 0, cell_slots()); }
-  All_cells_iterator all_cells_end() const { return All_cells_iterator(anchor_.get(), cell_slots(), cell_slots()); }
+  // No cells below dimension 3, as in CGAL.
+  All_cells_iterator all_cells_begin() const
+  {
+    return dimension() < 3 ? all_cells_end() : anchor_->tds.raw_cells_begin();
+  }
+  All_cells_iterator all_cells_end() const { return anchor_->tds.raw_cells_end(); }
   All_cells_iterator cells_begin() const { return all_cells_begin(); }
   All_cells_iterator cells_end() const { return all_cells_end(); }
   Finite_cells_iterator finite_cells_begin() const { return Finite_cells_iterator(anchor_.get(), 0, cell_slots()); }
   Finite_cells_iterator finite_cells_end() const { return Finite_cells_iterator(anchor_.get(), cell_slots(), cell_slots()); }
 
-  All_vertices_iterator all_vertices_begin() const { return All_vertices_iterator(anchor_.get(), 0); }
   // The infinite vertex exists even in the empty triangulation, as in CGAL.
-  All_vertices_iterator all_vertices_end() const { return All_vertices_iterator(anchor_.get(), std::size_t(vertex_count()) + 1); }
+  All_vertices_iterator all_vertices_begin() const { return anchor_->tds.vertices_begin(); }
+  All_vertices_iterator all_vertices_end() const { return anchor_->tds.vertices_end(); }
   All_vertices_iterator vertices_begin() const { return all_vertices_begin(); }
   All_vertices_iterator vertices_end() const { return all_vertices_end(); }
   Finite_vertices_iterator finite_vertices_begin() const

@@ -7,8 +7,11 @@
 // and after the 3-2 flip that undoes it.
 #include "triangulation_checks.h"
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_simplex_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <algorithm>
 #include <array>
@@ -504,6 +507,186 @@ TEST(Tds_view, CreatedVertexIsInvisibleUntilPlaced)
   const Fast_dt copy(other);
   EXPECT_EQ(copy.tds().number_of_cells(), other.tds().number_of_cells());
   EXPECT_TRUE(copy.tds().is_valid());
+}
+
+// ---------------------------------------------------------------- copy_tds
+// CGAL's copy_triangulation_3 example, on CGAL's classes and on ours: an
+// Epick triangulation copied into an Epeck one by tds().copy_tds() with
+// CGAL's conversion functors (which skip the first vertex they see, the
+// infinite one), then set_infinite_vertex().
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+typedef CGAL::Cartesian_converter<K, Epeck> To_epeck;
+
+template <class Source, class Copy>
+struct Example_vertex_conversion
+{
+  mutable bool first_vertex = true;
+  typename Copy::Vertex operator()(const typename Source::Vertex&) const { return typename Copy::Vertex(); }
+  void operator()(const typename Source::Vertex& source, typename Copy::Vertex& copy) const
+  {
+    if(!first_vertex) copy.point() = To_epeck()(source.point());
+    else first_vertex = false;
+  }
+};
+template <class Source, class Copy>
+struct Example_cell_conversion
+{
+  typename Copy::Cell operator()(const typename Source::Cell&) const { return typename Copy::Cell(); }
+  void operator()(const typename Source::Cell&, typename Copy::Cell&) const {}
+};
+
+// Finite cells as sorted point triples of doubles, any kernel.
+template <class Tr>
+std::vector<Cell_key> finite_cell_keys_of_any_kernel(const Tr& tr)
+{
+  std::vector<Cell_key> keys;
+  for(auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+    Cell_key k;
+    for(int i = 0; i < 4; ++i) {
+      const auto p = c->vertex(i)->point();
+      k[i] = std::make_tuple(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+    std::sort(k.begin(), k.end());
+    keys.push_back(k);
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+template <class Tr>
+std::vector<Point> finite_points_in_order(const Tr& tr)
+{
+  std::vector<Point> points;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    const auto p = v->point();
+    points.push_back(Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+  }
+  return points;
+}
+
+template <template <class...> class Dt>
+void copy_epick_into_epeck_as_cgal_example_does()
+{
+  typedef Dt<K> Source;
+  typedef Dt<Epeck> Copy;
+  for(const std::vector<Point>& points : inputs()) {
+    const Source source(points.begin(), points.end());
+    Copy copy;
+    copy.set_infinite_vertex(copy.tds().copy_tds(source.tds(), source.infinite_vertex(),
+                                                 Example_vertex_conversion<Source, Copy>(),
+                                                 Example_cell_conversion<Source, Copy>()));
+    ASSERT_TRUE(copy.is_valid(true)) << points.size() << " points";
+    EXPECT_EQ(copy.dimension(), source.dimension());
+    EXPECT_EQ(copy.number_of_vertices(), source.number_of_vertices());
+    EXPECT_EQ(copy.number_of_cells(), source.number_of_cells());
+    EXPECT_TRUE(finite_points_in_order(copy) == finite_points_in_order(source)) << "vertex order";
+    EXPECT_TRUE(finite_cell_keys_of_any_kernel(copy) == finite_cell_keys_of_any_kernel(source));
+    // The copy is a working triangulation.
+    copy.insert(typename Epeck::Point_3(0.5, 0.25, 0.125));
+    EXPECT_TRUE(copy.is_valid());
+  }
+}
+TEST(Tds_copy, CgalExampleOnCgalClasses) { copy_epick_into_epeck_as_cgal_example_does<CGAL::Delaunay_triangulation_3>(); }
+TEST(Tds_copy, CgalExampleOnOurClass) { copy_epick_into_epeck_as_cgal_example_does<CGAL::Fast_Delaunay_triangulation_3>(); }
+
+// From CGAL's data structure into ours and back, with infos carried by the
+// default conversion: the cells are CGAL's, in CGAL's order, and every
+// vertex and cell keeps its info.
+typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_with_info_3<int, K>,
+                                             CGAL::Triangulation_cell_base_with_info_3<int, K, CGAL::Delaunay_triangulation_cell_base_3<K>>>
+    Info_tds;
+
+TEST(Tds_copy, FromCgalDataStructureWithInfosAndBack)
+{
+  typedef CGAL::Delaunay_triangulation_3<K, Info_tds> Cgal_info_dt;
+  typedef CGAL::Fast_Delaunay_triangulation_3<K, Info_tds> Fast_info_dt;
+  for(const std::vector<Point>& points : inputs()) {
+    Cgal_info_dt cgal(points.begin(), points.end());
+    int n = 0;
+    for(auto v = cgal.finite_vertices_begin(); v != cgal.finite_vertices_end(); ++v) v->info() = ++n;
+    for(auto c = cgal.all_cells_begin(); c != cgal.all_cells_end(); ++c) c->info() = ++n;
+    Fast_info_dt fast;
+    fast.set_infinite_vertex(fast.tds().copy_tds(cgal.tds(), cgal.infinite_vertex()));
+    ASSERT_TRUE(fast.is_valid(true)) << points.size() << " points";
+    EXPECT_TRUE(finite_points_in_order(fast) == finite_points_in_order(cgal));
+    auto w = cgal.finite_vertices_begin();
+    for(auto v = fast.finite_vertices_begin(); v != fast.finite_vertices_end(); ++v, ++w) EXPECT_EQ(v->info(), w->info());
+    // Dimension 3: the same cells in the same order, infos included (an
+    // infinite cell may have its vertices permuted, evenly).
+    if(cgal.dimension() == 3) {
+      auto key = [](const auto& tr, auto c) {
+        std::array<Point, 4> k;
+        for(int i = 0; i < 4; ++i) k[i] = tr.is_infinite(c->vertex(i)) ? Point(9, 9, 9) : c->vertex(i)->point();
+        if(!tr.is_infinite(c)) return k;
+        std::sort(k.begin(), k.end());
+        return k;
+      };
+      auto d = cgal.all_cells_begin();
+      for(auto c = fast.all_cells_begin(); c != fast.all_cells_end(); ++c, ++d) {
+        EXPECT_TRUE(key(fast, c) == key(cgal, d));
+        EXPECT_EQ(c->info(), d->info());
+      }
+      EXPECT_TRUE(d == cgal.all_cells_end());
+    }
+    // Back into CGAL's class, through CGAL's own copy_tds.
+    Cgal_info_dt back;
+    back.set_infinite_vertex(back.tds().copy_tds(fast.tds(), fast.infinite_vertex()));
+    EXPECT_TRUE(back.is_valid(true));
+    EXPECT_TRUE(finite_cell_keys(back) == finite_cell_keys(cgal));
+  }
+}
+
+// What cannot be a copy is refused with the reason, and the triangulation
+// stays as it was.
+TEST(Tds_copy, RefusesWhatIsNotADelaunayTriangulationOfDoubles)
+{
+  const std::vector<Point> points = to_points<Point>(uniform_points(60, 5));
+  const std::vector<Point> others = to_points<Point>(uniform_points(30, 6));
+  Fast_dt fast(others.begin(), others.end());
+  const std::vector<Cell_key> before = finite_cell_keys(fast);
+  auto expect_refused = [&](auto&& copy, const std::string& reason) {
+    try {
+      copy();
+      ADD_FAILURE() << "accepted: " << reason;
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fast.is_valid());
+    EXPECT_TRUE(finite_cell_keys(fast) == before);
+  };
+  // A 2-3 flip of a locally Delaunay facet: a valid TDS, no longer Delaunay.
+  Cgal_dt flipped(points.begin(), points.end());
+  bool did_flip = false;
+  for(auto f = flipped.finite_facets_begin(); f != flipped.finite_facets_end() && !did_flip; ++f)
+    if(!flipped.is_infinite(f->first->neighbor(f->second)) && !flipped.is_infinite(f->first)) did_flip = flipped.tds().flip(*f);
+  ASSERT_TRUE(did_flip && flipped.tds().is_valid());
+  expect_refused([&] { fast.tds().copy_tds(flipped.tds(), flipped.infinite_vertex()); }, "not a Delaunay triangulation");
+  // The infinite vertex is needed.
+  const Cgal_dt cgal(points.begin(), points.end());
+  expect_refused([&] { fast.tds().copy_tds(cgal.tds(), Cgal_dt::Vertex_handle()); }, "infinite vertex must be given");
+  // A point that is not exactly doubles, into an exact kernel.
+  typedef CGAL::Fast_Delaunay_triangulation_3<Epeck> Fast_epeck;
+  Fast_epeck exact;
+  struct Third_of_x
+  {
+    Fast_epeck::Vertex operator()(const Cgal_dt::Vertex&) const { return Fast_epeck::Vertex(); }
+    void operator()(const Cgal_dt::Vertex& source, Fast_epeck::Vertex& copy) const
+    {
+      copy.point() = Epeck::Point_3(Epeck::FT(source.point().x()) / 3, source.point().y(), source.point().z());
+    }
+  };
+  try {
+    exact.tds().copy_tds(cgal.tds(), cgal.infinite_vertex(), Third_of_x(), CGAL::Fast_Delaunay_triangulation_3_internal::Default_cell_conversion());
+    ADD_FAILURE() << "a third accepted";
+  } catch(const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("not doubles"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(exact.number_of_vertices(), 0u);
+  // set_infinite_vertex takes only the infinite vertex.
+  EXPECT_THROW(fast.set_infinite_vertex(fast.finite_vertices_begin()), std::invalid_argument);
+  EXPECT_NO_THROW(fast.set_infinite_vertex(fast.infinite_vertex()));
+  // A vertex's point is not assigned outside a copy.
+  Fast_dt::Vertex v = *fast.finite_vertices_begin();
+  EXPECT_THROW(v.point() = Point(0, 0, 0), std::logic_error);
 }
 
 } // namespace test_tds_interface

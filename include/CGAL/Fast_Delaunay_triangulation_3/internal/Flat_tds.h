@@ -25,6 +25,7 @@
 #define CGAL_FDT3_INTERNAL_FLAT_TDS_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Data_structure_copy.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
@@ -85,23 +86,30 @@ public:
 
   // ---------------------------------------------------------------- iterators
   // Every cell in the arrays, whatever the dimension (CGAL's raw cells).
-  Cell_iterator raw_cells_begin() const { return Cell_iterator(anchor_, 0, mesh().number_of_slots()); }
-  Cell_iterator raw_cells_end() const
+  // Iterators are handles (Handles.h).
+  Cell_iterator raw_cells_begin() const
   {
-    return Cell_iterator(anchor_, mesh().number_of_slots(), mesh().number_of_slots());
+    return Cell_iterator(anchor_, first_index_from(*anchor_, Cell_kind(), Tet_id(0)));
   }
+  Cell_iterator raw_cells_end() const { return Cell_iterator(anchor_, mesh().number_of_slots()); }
   Cell_iterator cells_begin() const { return dimension() < 3 ? cells_end() : raw_cells_begin(); }
   Cell_iterator cells_end() const { return raw_cells_end(); }
-  Vertex_iterator vertices_begin() const { return Vertex_iterator(anchor_, 0); }
-  Vertex_iterator vertices_end() const { return Vertex_iterator(anchor_, mesh().vertices.size() + 1); }
+  // The infinite vertex first, as CGAL's.
+  Vertex_iterator vertices_begin() const { return Vertex_iterator(anchor_, ghost_vertex); }
+  Vertex_iterator vertices_end() const { return Vertex_iterator(anchor_, mesh().vertices.size()); }
   Facet_iterator facets_begin() const { return Facet_iterator(anchor_, 0); }
   Facet_iterator facets_end() const { return Facet_iterator(anchor_, 4 * anchor_->slots_of_faces(2)); }
   Edge_iterator edges_begin() const { return Edge_iterator(anchor_, 0); }
   Edge_iterator edges_end() const { return Edge_iterator(anchor_, 6 * anchor_->slots_of_faces(1)); }
   typedef Iterator_range<Facet_iterator> Facets;
   typedef Iterator_range<Edge_iterator> Edges;
+  typedef Iterator_range<Cell_iterator> Cells;
+  typedef Iterator_range<Vertex_iterator> Vertices;
   Facets facets() const { return Facets(facets_begin(), facets_end()); }
   Edges edges() const { return Edges(edges_begin(), edges_end()); }
+  // The raw cells, as CGAL's cells() (its copy_tds() reads them so).
+  Cells cells() const { return Cells(raw_cells_begin(), raw_cells_end()); }
+  Vertices vertices() const { return Vertices(vertices_begin(), vertices_end()); }
 
   // ---------------------------------------------------------------- membership
   bool is_vertex(Vertex_handle v) const
@@ -210,6 +218,28 @@ public:
   // insert_in_hole placed created vertex v.
   void placed(Vertex_id v) { created_.erase(std::find(created_.begin(), created_.end(), v)); }
   bool is_created(Vertex_id v) const { return std::find(created_.begin(), created_.end(), v) != created_.end(); }
+
+  // ---------------------------------------------------------------- copies (Data_structure_copy.h)
+  // The triangulation becomes a copy of `source`, a data structure with
+  // CGAL's interface whose vertex `infinite` is its infinite vertex, with
+  // CGAL's conversion functors; returns the copy's infinite vertex, for
+  // set_infinite_vertex().  The copy keeps the source's vertex order and, in
+  // dimension 3, its cells in order; the points must be exactly doubles and
+  // the source the Delaunay triangulation of its points (checked exactly),
+  // else std::invalid_argument names the defect and nothing changes.
+  template <class Source, class Convert_vertex, class Convert_cell>
+  Vertex_handle copy_tds(const Source& source, typename Source::Vertex_handle infinite,
+                         const Convert_vertex& convert_vertex, const Convert_cell& convert_cell)
+  {
+    copy_data_structure(*anchor_, source, infinite, convert_vertex, convert_cell);
+    return Vertex_handle(anchor_, ghost_vertex);
+  }
+  // The points (and infos of the same type) go over as they are.
+  template <class Source>
+  Vertex_handle copy_tds(const Source& source, typename Source::Vertex_handle infinite)
+  {
+    return copy_tds(source, infinite, Default_vertex_conversion(), Default_cell_conversion());
+  }
 
   // ---------------------------------------------------------------- flips (dimension 3)
   // 2-3 flip of facet (c, i): the two cells sharing it become three around

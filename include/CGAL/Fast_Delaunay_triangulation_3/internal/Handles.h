@@ -14,14 +14,110 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 
+#include <CGAL/Handle_hash_function.h>
+
 #include <cstddef>
 #include <functional>
 #include <iterator>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
+
+// CGAL's handles are the iterators of its containers: `Cell_handle` and
+// `Cell_iterator` are one type there, and so are `Vertex_handle` and
+// `Vertex_iterator`.  Code relies on it: Triangulation_3_to_lcc.h looks a
+// Cell_iterator up in a std::map keyed by Cell_handle, Alpha_shape_3 hashes
+// handles through std::iterator_traits.  Ours are iterators too, and step
+// through the arrays of their anchor:
+// - cells in slot order over the live slots; the end is (anchor, number of
+//   slots), whatever the dimension (the TDS's raw cells);
+// - vertices as CGAL lists them, the infinite one first, then the live ids
+//   in order; the end is (anchor, number of vertex records).
+struct Vertex_kind {};
+struct Cell_kind {};
+
+template <class Anchor, class Index>
+Index first_index_from(const Anchor& a, Cell_kind, Index t)
+{
+  const Flat_storage& m = a.flat_storage();
+  while(t < m.number_of_slots() && !m.is_live(t)) ++t;
+  return t;
+}
+template <class Anchor, class Index>
+Index first_index_from(const Anchor& a, Vertex_kind, Index v)
+{
+  const Flat_storage& m = a.flat_storage();
+  while(v < m.vertices.size() && m.is_dead(v)) ++v;
+  return v;
+}
+template <class Anchor, class Index>
+Index next_index(const Anchor& a, Cell_kind kind, Index t)
+{
+  return first_index_from(a, kind, Index(t + 1));
+}
+template <class Anchor, class Index>
+Index next_index(const Anchor& a, Vertex_kind kind, Index v)
+{
+  return first_index_from(a, kind, v == ghost_vertex ? Index(0) : Index(v + 1));
+}
+// Stepping back from the first element is undefined, as for CGAL's.
+template <class Anchor, class Index>
+Index previous_index(const Anchor& a, Cell_kind, Index t)
+{
+  const Flat_storage& m = a.flat_storage();
+  do {
+    CGAL_precondition(t > 0);
+    --t;
+  } while(!m.is_live(t));
+  return t;
+}
+template <class Anchor, class Index>
+Index previous_index(const Anchor& a, Vertex_kind, Index v)
+{
+  CGAL_precondition(v != ghost_vertex);
+  const Flat_storage& m = a.flat_storage();
+  while(v > 0)
+    if(!m.is_dead(--v)) return v;
+  return ghost_vertex;
+}
+
+// What point() of a vertex that is not const gives: its point (it is one),
+// and the target of an assignment in CGAL's copy_tds() protocol, where the
+// conversion functor sets the copy's point with `copy.point() = p`
+// (Data_structure_copy.h: the anchor being filled takes it).  Any other
+// assignment throws std::logic_error: a vertex of a triangulation moves
+// through move(), and a silent write to a temporary would leave the user
+// believing it moved.  Handles of user vertex bases give non-const vertices,
+// so this is what their `v->point()` is: being a Point, it goes wherever
+// the point went before (template arguments, comparisons, members).
+template <class Anchor, class Point>
+class Vertex_point_reference : public Point
+{
+public:
+  Vertex_point_reference(const Anchor* anchor, Vertex_id v)
+      : Point(anchor == nullptr ? Point() : anchor->current_point(v)), anchor_(anchor), v_(v) {}
+  Vertex_point_reference(const Vertex_point_reference&) = default;
+
+  Vertex_point_reference& operator=(const Point& p)
+  {
+    if(anchor_ == nullptr)
+      throw std::logic_error("Fast_Delaunay_triangulation_3: a vertex that belongs to no triangulation has no point");
+    anchor_->assign_point(v_, p);
+    Point::operator=(p);
+    return *this;
+  }
+  Vertex_point_reference& operator=(const Vertex_point_reference& other)
+  {
+    return *this = static_cast<const Point&>(other);
+  }
+
+private:
+  const Anchor* anchor_;
+  Vertex_id v_;
+};
 
 // A vertex seen through the anchor of the triangulation Tr (which provides
 // point_of, incident_cell_of and the handle types).
@@ -32,11 +128,13 @@ public:
   typedef typename Tr::Point Point;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Anchor Anchor;
+  typedef Vertex_kind Kind;
 
   Vertex_facade() = default;
   Vertex_facade(const Anchor* tr, Vertex_id id) : tr_(tr), id_(id) {}
 
   Point point() const { return tr_->point_of(id_); }
+  Vertex_point_reference<Anchor, Point> point() { return {tr_, id_}; }
   Cell_handle cell() const { return tr_->incident_cell_of(id_); }
   bool is_valid(bool = false, int = 0) const { return tr_ != nullptr; }
   // Only with a vertex base with info: the info lives in the triangulation's
@@ -59,6 +157,7 @@ public:
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Anchor Anchor;
+  typedef Cell_kind Kind;
 
   Cell_facade() = default;
   Cell_facade(const Anchor* tr, Tet_id id) : tr_(tr), id_(id) {}
@@ -153,12 +252,19 @@ public:
   friend std::size_t hash_value(const Handle& h) { return std::hash<decltype(h.index())>()(h.index()); }
 };
 
-// A handle that holds its facade by value, so `->` needs no storage elsewhere.
+// A handle that holds its facade by value, so `->` needs no storage
+// elsewhere; also the iterator over its kind (see Vertex_kind above).  Its
+// element lives in it, so a std::reverse_iterator, which dereferences a
+// temporary copy, would hand out a dangling reference: walk backwards with --.
 template <class Facade, class Index>
 class Flat_handle : public Handle_order<Flat_handle<Facade, Index>>
 {
 public:
+  typedef std::bidirectional_iterator_tag iterator_category;
   typedef Facade value_type;
+  typedef const Facade& reference;
+  typedef const Facade* pointer;
+  typedef std::ptrdiff_t difference_type;
   typedef typename Facade::Anchor Anchor;
 
   Flat_handle() = default;
@@ -171,6 +277,29 @@ public:
 
   const Anchor* owner() const { return facade_.anchor(); }
   Index index() const { return facade_.id(); }
+
+  Flat_handle& operator++()
+  {
+    facade_ = Facade(owner(), next_index(*owner(), typename Facade::Kind(), index()));
+    return *this;
+  }
+  Flat_handle operator++(int)
+  {
+    Flat_handle old = *this;
+    ++*this;
+    return old;
+  }
+  Flat_handle& operator--()
+  {
+    facade_ = Facade(owner(), previous_index(*owner(), typename Facade::Kind(), index()));
+    return *this;
+  }
+  Flat_handle operator--(int)
+  {
+    Flat_handle old = *this;
+    --*this;
+    return old;
+  }
 
 private:
   Facade facade_;
@@ -314,6 +443,27 @@ private:
 };
 
 } // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+// CGAL's Unique_hash_map (its copy_tds(), Alpha_shape_3, ...) hashes a
+// handle by the address of its element, and takes the hash for the key.
+// Our elements live in the handles, so the address would change from copy
+// to copy: the hash is the index instead (one more, null handles are 0),
+// one-to-one over the handles of one triangulation.  CGAL leaves this class
+// template open for that.
+namespace CGAL {
+namespace internal {
+namespace handle {
+template <class Facade, class Index>
+struct Hash_functor<CGAL::Fast_Delaunay_triangulation_3_internal::Flat_handle<Facade, Index>>
+{
+  std::size_t operator()(const CGAL::Fast_Delaunay_triangulation_3_internal::Flat_handle<Facade, Index>& h)
+  {
+    return h ? std::size_t(h.index()) + 1 : 0;
+  }
+};
+} // namespace handle
+} // namespace internal
 } // namespace CGAL
 
 // CGAL's handles hash with std::hash as well as boost::hash (hash_value):

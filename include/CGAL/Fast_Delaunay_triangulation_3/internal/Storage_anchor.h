@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -38,6 +39,7 @@ class Storage_anchor
 public:
   typedef typename Tr::Geom_traits Geom_traits;
   typedef typename Tr::Point Point;
+  typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_info Vertex_info;
   typedef typename Tr::Cell_info Cell_info;
@@ -138,6 +140,43 @@ public:
         const Vertex_id w = core.mesh.vertex(t, i);
         if(w != ghost_vertex) incident_cells[w] = t;
       }
+  }
+
+  // ---------------------------------------------------------------- copies of another data structure
+  // An anchor filled by copy_data_structure (Data_structure_copy.h) takes
+  // the points its conversion functors assign (Vertex_point_reference):
+  // one per vertex id, while `being_copied`.
+  mutable std::vector<Point> points_being_copied;
+  bool being_copied = false;
+  void assign_point(Vertex_id v, const Point& p) const
+  {
+    if(!being_copied)
+      throw std::logic_error("Fast_Delaunay_triangulation_3: a vertex's point is not assigned: the vertex moves "
+                             "through move() or move_if_no_collision()");
+    if(v != ghost_vertex) points_being_copied[v] = p;
+  }
+  Point current_point(Vertex_id v) const
+  {
+    return !being_copied || v == ghost_vertex ? point_of(v) : points_being_copied[v];
+  }
+
+  // Takes the data `staged` was filled with (a copy of another data
+  // structure, checked): arrays, kernel points, infos and user records.
+  // The traits, the engine's settings and the lock data stay this anchor's.
+  void take_copy(Storage_anchor& staged)
+  {
+    const int copied_dimension = staged.core.dimension;
+    core.assign(std::move(staged.core.mesh), copied_dimension);
+    incident_cells.clear();
+    tds.forget_created();
+    kernel_points = std::move(staged.kernel_points);
+    vertex_infos = std::move(staged.vertex_infos);
+    cell_infos = std::move(staged.cell_infos);
+    user_vertices = std::move(staged.user_vertices);
+    user_vertices.attach(this);
+    user_cells = std::move(staged.user_cells);
+    dimension_seen_ = dimension();
+    vertices_seen_ = core.vertex_slots();
   }
 
   // ---------------------------------------------------------------- read by handles and iterators

@@ -110,30 +110,57 @@ void write_triangulation_3(std::ostream& os, const Flat_storage& mesh, Point_of 
     for(std::size_t c = 0; c < m; ++c) os << '\n';
 }
 
-// Reads one triangulation in CGAL's format into a new Flat_storage and
-// checks it completely before anyone sees it: counts, index ranges, at most
-// one infinite vertex per cell, symmetric adjacency across shared facets,
-// one connected piece, positive orientation, the (perturbed) local Delaunay
-// property on every facet including the hull's, every vertex used, and, below
-// dimension 3, distinct points spanning exactly the stated dimension.  Below
-// dimension 3 the cell section is checked and dropped (this package stores
-// no lower-dimensional cells).
-template <class Point>
-class Triangulation_reader
+// The cells of a triangulation of dimension 3 in CGAL's numbering: what a
+// file's cell section holds, and what a copy of another data structure
+// (Flat_tds::copy_tds) gives.  Cell c has vertices[4c + i] (0 for the
+// infinite vertex, k for vertex k - 1 of the storage) and, opposite vertex
+// i, neighbour neighbors[4c + i] (a cell number).  Indices are in range.
+struct Cell_table
+{
+  std::vector<std::size_t> vertices;
+  std::vector<std::size_t> neighbors;
+  std::size_t size() const { return vertices.size() / 4; }
+};
+
+// Builds the cells of a table into `mesh`, which holds the vertices, and
+// checks them completely before anyone sees them: at most one infinite
+// vertex per cell, symmetric adjacency across shared facets, one connected
+// piece, positive orientation, the (perturbed) local Delaunay property on
+// every facet including the hull's, every vertex used.  False, with the
+// reason in error(), when the table is not a Delaunay triangulation.
+class Cell_table_assembler
 {
 public:
-  explicit Triangulation_reader(std::istream& is) : is_(is), ascii_(IO::is_ascii(is)) {}
-
-  // True on success, with the result in `mesh` and `dimension`; else false
-  // and error() says what is wrong and where.
-  bool read(Flat_storage& mesh, int& dimension)
+  bool assemble(const Cell_table& table, Flat_storage& mesh)
   {
-    if(!read_dimension(dimension)) return false;
-    std::size_t n = 0;
-    if(!read_number(n, max_vertices, "number of vertices")) return false;
-    if(!read_points(n, mesh)) return false;
-    if(dimension == 3) return read_cells_3(mesh) && check_3(mesh);
-    return read_lower_dimensional_cells(dimension, n) && check_lower_dimensional(mesh, dimension);
+    const std::size_t m = table.size();
+    if(m == 0) return fail("dimension 3 with no cells");
+    for(std::size_t c = 0; c < m; ++c) {
+      Vertex_id v[4];
+      int infinite = 3, infinite_count = 0;
+      for(int i = 0; i < 4; ++i) {
+        const std::size_t k = table.vertices[4 * c + i];
+        v[i] = k == 0 ? ghost_vertex : static_cast<Vertex_id>(k - 1);
+        if(k == 0) {
+          infinite = i;
+          ++infinite_count;
+        }
+      }
+      if(infinite_count > 1) return fail(cell_name(c) + " has more than one infinite vertex");
+      const Tet_id t = mesh.new_tet();
+      for(int i = 0; i < 4; ++i) {
+        mesh.vertex_ids(t)[slot_with_ghost_last(i, infinite)] = v[i];
+        // The neighbour's cell number; a facet code once all are known.
+        mesh.tets[t].n[slot_with_ghost_last(i, infinite)] = static_cast<Facet_code>(table.neighbors[4 * c + i]);
+      }
+      if(infinite_count == 1) ++mesh.ghost_tets;
+    }
+    mesh.live_tets = m;
+    if(mesh.ghost_tets == m) return fail("no finite cell");
+    for(Tet_id t = 0; t < m; ++t)
+      for(int i = 0; i < 4; ++i)
+        if(!link_facet(mesh, t, i)) return false;
+    return check_3(mesh);
   }
 
   const std::string& error() const { return error_; }
@@ -144,101 +171,10 @@ private:
     error_ = message;
     return false;
   }
-
-  bool read_dimension(int& dimension)
-  {
-    if(ascii_) is_ >> dimension;
-    else CGAL::read(is_, dimension);
-    if(!is_) return fail("the stream ends before the dimension");
-    if(dimension < -1 || dimension > 3)
-      return fail("dimension " + std::to_string(dimension) + " is not in [-1, 3]");
-    return true;
-  }
-
-  // A count or index in [0, limit]; in ASCII a minus sign is an error, not
-  // a huge unsigned value.
-  bool read_number(std::size_t& value, std::size_t limit, const std::string& what)
-  {
-    if(ascii_) {
-      long long signed_value = 0;
-      is_ >> signed_value;
-      if(!is_) return fail("the stream ends or has no number at " + what);
-      if(signed_value < 0) return fail(what + " is negative (" + std::to_string(signed_value) + ")");
-      value = static_cast<std::size_t>(signed_value);
-    } else {
-      CGAL::read(is_, value);
-      if(!is_) return fail("the stream ends at " + what);
-    }
-    if(value > limit)
-      return fail(what + " is " + std::to_string(value) + ", more than " + std::to_string(limit));
-    return true;
-  }
-  bool read_points(std::size_t n, Flat_storage& mesh)
-  {
-    mesh.clear();
-    for(std::size_t v = 0; v < n; ++v) {
-      Point p;
-      if(!(is_ >> p)) return fail("the stream ends or is unreadable at point " + std::to_string(v + 1));
-      // The format writes doubles (an exact kernel's operator<< writes the
-      // double of each coordinate); a coordinate read as a decimal or a
-      // quotient is taken as its nearest double.
-      Vertex_record r = {{0, 0, 0}, 0};
-      nearest_coordinates(p, r.xyz);
-      if(!std::isfinite(r.xyz[0]) || !std::isfinite(r.xyz[1]) || !std::isfinite(r.xyz[2]))
-        return fail("point " + std::to_string(v + 1) + " has a non-finite coordinate");
-      mesh.vertices.push_back(r);
-    }
-    return true;
-  }
-
   static std::string cell_name(std::size_t c) { return "cell " + std::to_string(c); }
 
-  // Storage grows as the cells arrive, so a huge count in a short file fails
-  // at the end of the stream rather than in the allocator.
-  bool read_cells_3(Flat_storage& mesh)
-  {
-    const std::size_t n = mesh.vertices.size();
-    std::size_t m = 0;
-    if(!read_number(m, max_tets, "number of cells")) return false;
-    if(m == 0) return fail("dimension 3 with no cells");
-    std::vector<std::uint8_t> infinite_slot;
-    for(std::size_t c = 0; c < m; ++c) {
-      Vertex_id v[4];
-      int infinite = 3, infinite_count = 0;
-      for(int i = 0; i < 4; ++i) {
-        std::size_t k = 0;
-        if(!read_number(k, n, "vertex " + std::to_string(i) + " of " + cell_name(c))) return false;
-        v[i] = k == 0 ? ghost_vertex : static_cast<Vertex_id>(k - 1);
-        if(k == 0) {
-          infinite = i;
-          ++infinite_count;
-        }
-      }
-      if(infinite_count > 1) return fail(cell_name(c) + " has more than one infinite vertex");
-      const Tet_id t = mesh.new_tet();
-      for(int i = 0; i < 4; ++i) mesh.vertex_ids(t)[slot_with_ghost_last(i, infinite)] = v[i];
-      infinite_slot.push_back(static_cast<std::uint8_t>(infinite));
-      if(infinite_count == 1) ++mesh.ghost_tets;
-    }
-    mesh.live_tets = m;
-    if(mesh.ghost_tets == m) return fail("no finite cell");
-
-    // Neighbour cell indices first; turned into facet codes once all are known.
-    for(std::size_t c = 0; c < m; ++c) {
-      for(int i = 0; i < 4; ++i) {
-        std::size_t u = 0;
-        if(!read_number(u, m - 1, "neighbour " + std::to_string(i) + " of " + cell_name(c))) return false;
-        mesh.tets[c].n[slot_with_ghost_last(i, infinite_slot[c])] = static_cast<Facet_code>(u);
-      }
-    }
-    for(Tet_id t = 0; t < m; ++t)
-      for(int i = 0; i < 4; ++i)
-        if(!link_facet(mesh, t, i)) return false;
-    return true;
-  }
-
   // Called for t = 0, 1, ... in order.  Neighbour entry i of t holds the
-  // neighbour's cell index u as read; replaces it by the facet code of the
+  // neighbour's cell number u from the table; replaces it by the facet code of the
   // same facet seen from u.  The entries of u hold facet codes if u < t
   // (linked already) and cell indices otherwise.
   bool link_facet(Flat_storage& mesh, Tet_id t, int i)
@@ -322,6 +258,141 @@ private:
     return true;
   }
 
+  std::string error_;
+};
+
+// Below dimension 3 the cells are not kept: the vertices must be distinct
+// points spanning exactly `dimension`, whose triangulation is then built.
+// False, with the reason in `error`, otherwise.
+inline bool vertices_span_dimension(Flat_storage& mesh, int dimension, std::string& error)
+{
+  std::vector<Vertex_id> order(mesh.vertices.size());
+  std::iota(order.begin(), order.end(), Vertex_id(0));
+  std::sort(order.begin(), order.end(), [&mesh](Vertex_id a, Vertex_id b) {
+    return lexicographically_smaller(mesh.point(a), mesh.point(b));
+  });
+  for(std::size_t k = 1; k < order.size(); ++k)
+    if(same_point(mesh.point(order[k - 1]), mesh.point(order[k]))) {
+      error = "points " + std::to_string(order[k - 1] + 1) + " and " + std::to_string(order[k] + 1) + " are equal";
+      return false;
+    }
+  Triangulation_core check;
+  check.mesh = std::move(mesh);
+  const int spanned = check.affine_dimension();
+  mesh = std::move(check.mesh);
+  if(spanned != dimension) {
+    error = "dimension " + std::to_string(dimension) + " but the points span dimension " + std::to_string(spanned);
+    return false;
+  }
+  return true;
+}
+
+// Reads one triangulation in CGAL's format into a new Flat_storage and
+// checks it completely before anyone sees it: counts and index ranges here,
+// the cells by Cell_table_assembler, and below dimension 3 the vertices by
+// vertices_span_dimension.  Below
+// dimension 3 the cell section is checked and dropped (this package stores
+// no lower-dimensional cells).
+template <class Point>
+class Triangulation_reader
+{
+public:
+  explicit Triangulation_reader(std::istream& is) : is_(is), ascii_(IO::is_ascii(is)) {}
+
+  // True on success, with the result in `mesh` and `dimension`; else false
+  // and error() says what is wrong and where.
+  bool read(Flat_storage& mesh, int& dimension)
+  {
+    if(!read_dimension(dimension)) return false;
+    std::size_t n = 0;
+    if(!read_number(n, max_vertices, "number of vertices")) return false;
+    if(!read_points(n, mesh)) return false;
+    if(dimension == 3) return read_cells_3(mesh);
+    std::string why;
+    return read_lower_dimensional_cells(dimension, n) && (vertices_span_dimension(mesh, dimension, why) || fail(why));
+  }
+
+  const std::string& error() const { return error_; }
+
+private:
+  bool fail(const std::string& message)
+  {
+    error_ = message;
+    return false;
+  }
+
+  bool read_dimension(int& dimension)
+  {
+    if(ascii_) is_ >> dimension;
+    else CGAL::read(is_, dimension);
+    if(!is_) return fail("the stream ends before the dimension");
+    if(dimension < -1 || dimension > 3)
+      return fail("dimension " + std::to_string(dimension) + " is not in [-1, 3]");
+    return true;
+  }
+
+  // A count or index in [0, limit]; in ASCII a minus sign is an error, not
+  // a huge unsigned value.
+  bool read_number(std::size_t& value, std::size_t limit, const std::string& what)
+  {
+    if(ascii_) {
+      long long signed_value = 0;
+      is_ >> signed_value;
+      if(!is_) return fail("the stream ends or has no number at " + what);
+      if(signed_value < 0) return fail(what + " is negative (" + std::to_string(signed_value) + ")");
+      value = static_cast<std::size_t>(signed_value);
+    } else {
+      CGAL::read(is_, value);
+      if(!is_) return fail("the stream ends at " + what);
+    }
+    if(value > limit)
+      return fail(what + " is " + std::to_string(value) + ", more than " + std::to_string(limit));
+    return true;
+  }
+  bool read_points(std::size_t n, Flat_storage& mesh)
+  {
+    mesh.clear();
+    for(std::size_t v = 0; v < n; ++v) {
+      Point p;
+      if(!(is_ >> p)) return fail("the stream ends or is unreadable at point " + std::to_string(v + 1));
+      // The format writes doubles (an exact kernel's operator<< writes the
+      // double of each coordinate); a coordinate read as a decimal or a
+      // quotient is taken as its nearest double.
+      Vertex_record r = {{0, 0, 0}, 0};
+      nearest_coordinates(p, r.xyz);
+      if(!std::isfinite(r.xyz[0]) || !std::isfinite(r.xyz[1]) || !std::isfinite(r.xyz[2]))
+        return fail("point " + std::to_string(v + 1) + " has a non-finite coordinate");
+      mesh.vertices.push_back(r);
+    }
+    return true;
+  }
+
+  static std::string cell_name(std::size_t c) { return "cell " + std::to_string(c); }
+
+  // The table grows as the cells arrive, so a huge count in a short file
+  // fails at the end of the stream rather than in the allocator.
+  bool read_cells_3(Flat_storage& mesh)
+  {
+    const std::size_t n = mesh.vertices.size();
+    std::size_t m = 0;
+    if(!read_number(m, max_tets, "number of cells")) return false;
+    Cell_table table;
+    for(std::size_t c = 0; c < m; ++c)
+      for(int i = 0; i < 4; ++i) {
+        std::size_t k = 0;
+        if(!read_number(k, n, "vertex " + std::to_string(i) + " of " + cell_name(c))) return false;
+        table.vertices.push_back(k);
+      }
+    for(std::size_t c = 0; c < m; ++c)
+      for(int i = 0; i < 4; ++i) {
+        std::size_t u = 0;
+        if(!read_number(u, m - 1, "neighbour " + std::to_string(i) + " of " + cell_name(c))) return false;
+        table.neighbors.push_back(u);
+      }
+    Cell_table_assembler assembler;
+    return assembler.assemble(table, mesh) || fail(assembler.error());
+  }
+
   // Dimensions 1 and 2: m (d+1)-tuples of vertex indices, then of neighbour
   // indices; a sphere of n + 1 vertices has 2n - 2 triangles, a circle n + 1
   // edges.
@@ -353,27 +424,6 @@ private:
         if(std::find(&neighbors[k * u], &neighbors[k * u] + k, c) == &neighbors[k * u] + k)
           return fail("adjacency is not symmetric between " + cell_name(c) + " and " + cell_name(u));
       }
-    return true;
-  }
-
-  bool check_lower_dimensional(Flat_storage& mesh, int dimension)
-  {
-    std::vector<Vertex_id> order(mesh.vertices.size());
-    std::iota(order.begin(), order.end(), Vertex_id(0));
-    std::sort(order.begin(), order.end(), [&mesh](Vertex_id a, Vertex_id b) {
-      return lexicographically_smaller(mesh.point(a), mesh.point(b));
-    });
-    for(std::size_t k = 1; k < order.size(); ++k)
-      if(same_point(mesh.point(order[k - 1]), mesh.point(order[k])))
-        return fail("points " + std::to_string(order[k - 1] + 1) + " and " + std::to_string(order[k] + 1) +
-                    " are equal");
-    Triangulation_core check;
-    check.mesh = std::move(mesh);
-    const int spanned = check.affine_dimension();
-    mesh = std::move(check.mesh);
-    if(spanned != dimension)
-      return fail("dimension " + std::to_string(dimension) + " but the points span dimension " +
-                  std::to_string(spanned));
     return true;
   }
 

@@ -136,6 +136,7 @@ public:
   typedef typename Tr::Anchor Anchor;
 
   Point point() const { return tr_->point_of(id_); }
+  Vertex_point_reference<Anchor, Point> point() { return {tr_, id_}; }
   Cell_handle cell() const { return tr_->incident_cell_of(id_); }
   // The triangulation owns points and adjacency: a vertex cannot be moved or
   // re-attached through its handle.
@@ -198,12 +199,23 @@ private:
 };
 
 // A handle to a record of a user base: Record is the triangulation's Vertex
-// or Cell, Index its vertex id or cell slot.
+// or Cell, Index its vertex id or cell slot.  An iterator too, as
+// Flat_handle (Handles.h).
 template <class Tr, class Record, class Index>
 class User_handle : public Handle_order<User_handle<Tr, Record, Index>>
 {
+  // Named in a member function: Tr is incomplete where the handle type is.
+  static auto kind()
+  {
+    return typename std::conditional<std::is_same<Record, typename Tr::Vertex>::value, Vertex_kind, Cell_kind>::type();
+  }
+
 public:
+  typedef std::bidirectional_iterator_tag iterator_category;
   typedef Record value_type;
+  typedef Record& reference;
+  typedef Record* pointer;
+  typedef std::ptrdiff_t difference_type;
   typedef typename Tr::Anchor Anchor;
 
   User_handle() = default;
@@ -216,6 +228,29 @@ public:
 
   const Anchor* owner() const { return tr_; }
   Index index() const { return id_; }
+
+  User_handle& operator++()
+  {
+    id_ = next_index(*tr_, kind(), id_);
+    return *this;
+  }
+  User_handle operator++(int)
+  {
+    User_handle old = *this;
+    ++*this;
+    return old;
+  }
+  User_handle& operator--()
+  {
+    id_ = previous_index(*tr_, kind(), id_);
+    return *this;
+  }
+  User_handle operator--(int)
+  {
+    User_handle old = *this;
+    --*this;
+    return old;
+  }
 
 private:
   const Anchor* tr_ = nullptr;
@@ -353,6 +388,22 @@ public:
 };
 
 } // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+// As for Flat_handle (Handles.h): CGAL's Unique_hash_map hashes by index.
+namespace CGAL {
+namespace internal {
+namespace handle {
+template <class Tr, class Record, class Index>
+struct Hash_functor<CGAL::Fast_Delaunay_triangulation_3_internal::User_handle<Tr, Record, Index>>
+{
+  std::size_t operator()(const CGAL::Fast_Delaunay_triangulation_3_internal::User_handle<Tr, Record, Index>& h)
+  {
+    return h ? std::size_t(h.index()) + 1 : 0;
+  }
+};
+} // namespace handle
+} // namespace internal
 } // namespace CGAL
 
 namespace std {
