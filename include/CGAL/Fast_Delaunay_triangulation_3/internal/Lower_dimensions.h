@@ -219,6 +219,63 @@ public:
     return id(r);
   }
 
+  // Many vertices at once (a range insertion that stays below 3D): each as
+  // insert() inserts it, but the cells are copied into m once, by
+  // synchronise() after the last one, instead of after every point (which
+  // cost as much as CGAL's own insertion).  Until then m's cells are out of
+  // date: nothing but insert_unsynchronised and synchronise may follow.
+  Vertex_id insert_unsynchronised(const Flat_storage& m, Vertex_id v, Reference_cell start)
+  {
+    const Reference_point p = point(m, v);
+    const Location where = locate(p, start);
+    const std::size_t vertices_before = delaunay_->number_of_vertices();
+    Reference_vertex r;
+    if(delaunay_->dimension() == 2 && where.type != Delaunay::VERTEX &&
+       where.type != Delaunay::OUTSIDE_AFFINE_HULL) {
+      Delaunay::Facet boundary_edge;
+      conflicts_.clear();
+      delaunay_->find_conflicts(p, where.cell, Oneset_iterator<Delaunay::Facet>(boundary_edge),
+                                std::back_inserter(conflicts_));
+      r = delaunay_->insert_in_hole(p, conflicts_.begin(), conflicts_.end(), boundary_edge.first,
+                                    boundary_edge.second);
+    } else {
+      r = delaunay_->insert(p, where.type, where.cell, where.li, where.lj);
+    }
+    if(delaunay_->number_of_vertices() != vertices_before) set_vertex(v, r);
+    return id(r);
+  }
+  // The cells after insert_unsynchronised calls: a CGAL cell whose slot
+  // still names it keeps it (and its cell info: CGAL changes a segment in
+  // place in dimension 1), slots no cell keeps are freed, new cells take
+  // free slots, and every cell is copied.
+  void synchronise(Flat_storage& m)
+  {
+    fresh_.clear();
+    std::vector<char> kept(m.number_of_slots(), 0);
+    std::vector<Reference_cell> made;
+    for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c) {
+      const Tet_id t = slot(c);
+      if(t < cells_.size() && cells_[t] == Reference_cell(c) && m.is_live(t)) kept[t] = 1;
+      else made.push_back(c);
+    }
+    std::vector<Renamed_cell> before;
+    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+      if(!m.is_live(t)) continue;
+      if(!kept[t]) {
+        free_slot(m, t);
+        continue;
+      }
+      before.push_back(Renamed_cell{t, {}});
+      std::copy(m.tets[t].v, m.tets[t].v + 4, before.back().before);
+    }
+    if(made.size() > m.free_tets.size()) m.reserve_tets(made.size() - m.free_tets.size());
+    cells_.reserve(m.number_of_slots() + made.size());
+    for(Reference_cell c : made) take_new_slot(m, c);
+    for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c) copy_cell(m, c);
+    for(const Renamed_cell& r : before)
+      if(!std::equal(r.before, r.before + 4, m.tets[r.slot].v)) renamed_.push_back(r);
+  }
+
   // CGAL's insert_in_hole in dimension 2: the cells of `hole` (slots),
   // forming a hole star-shaped from the point of v, replaced by v joined to
   // the hole's boundary edges; (begin, i) is a boundary edge of the hole.
@@ -402,16 +459,7 @@ private:
     std::sort(kept.begin(), kept.end());
     for(Tet_id t : released)
       if(!std::binary_search(kept.begin(), kept.end(), t)) free_slot(m, t);
-    for(Reference_cell c : fresh) {
-      const Tet_id t = m.new_tet();
-      Tet_record& r = m.tets[t];
-      std::fill(r.v, r.v + 4, no_vertex);
-      ++m.live_tets;
-      c->info().id = t;
-      if(t >= cells_.size()) cells_.resize(t + 1);
-      cells_[t] = c;
-      fresh_.push_back(t);
-    }
+    for(Reference_cell c : fresh) take_new_slot(m, c);
     std::vector<Renamed_cell> before;
     for(Tet_id t : kept) {
       before.push_back(Renamed_cell{t, {}});
@@ -424,6 +472,19 @@ private:
     }
     for(const Renamed_cell& r : before)
       if(!std::equal(r.before, r.before + 4, m.tets[r.slot].v)) renamed_.push_back(r);
+  }
+
+  // A slot for a cell CGAL made; copy_cell fills it.
+  void take_new_slot(Flat_storage& m, Reference_cell c)
+  {
+    const Tet_id t = m.new_tet();
+    Tet_record& r = m.tets[t];
+    std::fill(r.v, r.v + 4, no_vertex);
+    ++m.live_tets;
+    c->info().id = t;
+    if(t >= cells_.size()) cells_.resize(t + 1);
+    cells_[t] = c;
+    fresh_.push_back(t);
   }
 
   void free_slot(Flat_storage& m, Tet_id t)
@@ -460,6 +521,7 @@ private:
   std::vector<Reference_vertex> vertices_; // by vertex id
   std::vector<Renamed_cell> renamed_;
   std::vector<Tet_id> fresh_;              // slots of new cells, see take_fresh_slots
+  std::vector<Reference_cell> conflicts_;  // insert_unsynchronised's scratch
 };
 
 // Checks the cells of a triangulation of dimension -1 to 2: CGAL's

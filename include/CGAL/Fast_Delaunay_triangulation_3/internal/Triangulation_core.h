@@ -700,15 +700,20 @@ private:
   std::size_t insert_below_dimension_3(Vertex_id first_new, std::vector<Vertex_id>& duplicate_of)
   {
     const Clock::time_point t0 = Clock::now();
+    // Copying all cells once costs about what copying the changed ones
+    // after each point does when the new vertices are an eighth of all.
+    const bool copy_once = 8 * duplicate_of.size() >= vertex_slots();
     Lower_dimensional_triangulation::Reference_cell hint;
     Vertex_id next = first_new;
     for(std::size_t i = 0; i < duplicate_of.size(); ++i) {
       if(next != first_new + i) mesh.vertices[next] = mesh.vertices[first_new + i];
-      const Vertex_id v = lower.insert(mesh, next, hint, nullptr);
+      const Vertex_id v = copy_once ? lower.insert_unsynchronised(mesh, next, hint)
+                                    : lower.insert(mesh, next, hint, nullptr);
       hint = lower.vertex(v)->cell();
       duplicate_of[i] = v;
       if(v == next) ++next;
     }
+    if(copy_once) lower.synchronise(mesh);
     mesh.vertices.resize(next);
     dimension = lower.delaunay().dimension();
     last_report.insertion_seconds = seconds(t0, Clock::now());
