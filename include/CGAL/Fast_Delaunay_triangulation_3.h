@@ -722,7 +722,7 @@ public:
       anchor_->core.insert_in_hole(xyz, hole.data(), hole.size(), ball, newv.index());
       after_single_insertion(ball);
     }
-    anchor_->kernel_points.replace(newv.index(), p);
+    anchor_->point_replaced(newv.index(), p);
     return newv;
   }
 
@@ -1050,8 +1050,10 @@ public:
     return Facet(f.first->neighbor(f.second), mirror_index(f.first, f.second));
   }
 
-  Point point(Cell_handle c, int i) const { return c->vertex(i)->point(); }
-  Point point(Vertex_handle v) const { return v->point(); }
+  // A reference where the vertex holds its point (a user vertex base, as
+  // CGAL's Alpha_shape_3 needs), else a value built from the arrays.
+  decltype(auto) point(Cell_handle c, int i) const { return c->vertex(i)->point(); }
+  decltype(auto) point(Vertex_handle v) const { return v->point(); }
   Tetrahedron tetrahedron(Cell_handle c) const
   {
     return Tetrahedron(point(c, 0), point(c, 1), point(c, 2), point(c, 3));
@@ -1754,7 +1756,7 @@ private:
     const Tet_id start = removal_start(v);
     if(dimension() == 3 && anchor_->core.move_within_star(v.index(), xyz, start, made)) {
       anchor_->cells_made(made);
-      anchor_->kernel_points.replace(v.index(), p);
+      anchor_->point_replaced(v.index(), p);
       return v;
     }
     if(!remove_on_collision) {
@@ -1768,7 +1770,7 @@ private:
     // removal, which is then all that happens (one walk fewer).
     const Vertex_id moved = anchor_->core.move(v.index(), xyz, start, made);
     anchor_->cells_made(made);
-    if(moved == v.index()) anchor_->kernel_points.replace(moved, p);
+    if(moved == v.index()) anchor_->point_replaced(moved, p);
     return Vertex_handle(anchor_.get(), moved);
   }
 

@@ -7,8 +7,14 @@
 // what it prints by the points, so the two strings must be equal.
 #include "triangulation_checks.h"
 
+#include <CGAL/Alpha_shape_3.h>
+#include <CGAL/Alpha_shape_cell_base_3.h>
+#include <CGAL/Alpha_shape_vertex_base_3.h>
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 #include <CGAL/IO/Color.h>
+#include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
+#include <CGAL/Triangulation_3_to_lcc.h>
+#include <CGAL/Unique_hash_map.h>
 #include <CGAL/point_generators_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Triangulation_data_structure_3.h>
@@ -597,6 +603,81 @@ std::string segment_traverser()
 }
 
 // ---------------------------------------------------------------- the tests
+// ---------------------------------------------------------------- CGAL packages over the triangulation
+// CGAL's Alpha_shape_3 derives from the triangulation class given.  Both
+// comparison modes: the exact one keeps references to the vertices' points
+// (Lazy_alpha_nt_3) and evaluates from them later.  Random points, and the
+// four nearly coplanar points of CGAL's own exact-alpha example.
+template <class Alpha_tag>
+struct Alpha_tds
+{
+  typedef CGAL::Alpha_shape_vertex_base_3<K, CGAL::Default, Alpha_tag> Vb;
+  typedef CGAL::Alpha_shape_cell_base_3<K, CGAL::Default, Alpha_tag> Cb;
+  typedef CGAL::Triangulation_data_structure_3<Vb, Cb> type;
+};
+template <class Alpha_tag, class Triangulation>
+std::string alpha_shape_of(const std::vector<Point>& points)
+{
+  typedef CGAL::Alpha_shape_3<Triangulation, Alpha_tag> Alpha_shape;
+  std::ostringstream os;
+  // Alphas are squared radii computed from a cell's points in its vertex
+  // order, which is not CGAL's: the last bits may differ.
+  os.precision(12);
+  Alpha_shape shape(points.begin(), points.end(), 0, Alpha_shape::GENERAL);
+  os << shape.number_of_alphas() << " alphas";
+  if(shape.number_of_alphas() == 0) return os.str();
+  const auto optimal = shape.find_optimal_alpha(1);
+  os << ", optimal " << CGAL::to_double(*optimal);
+  shape.set_alpha(*optimal);
+  os << ", solid components " << shape.number_of_solid_components();
+  std::vector<typename Alpha_shape::Facet> facets[3];
+  shape.get_alpha_shape_facets(std::back_inserter(facets[0]), Alpha_shape::REGULAR);
+  shape.get_alpha_shape_facets(std::back_inserter(facets[1]), Alpha_shape::SINGULAR);
+  shape.get_alpha_shape_facets(std::back_inserter(facets[2]), Alpha_shape::INTERIOR);
+  os << ", facets regular " << facets[0].size() << " singular " << facets[1].size() << " interior "
+     << facets[2].size();
+  std::vector<std::string> regular;
+  for(const auto& f : facets[0]) regular.push_back(facet_text(shape, f));
+  return os.str() + "\n" + sorted_lines(regular);
+}
+template <template <class...> class Dt>
+std::string alpha_shapes()
+{
+  std::vector<Point> points = to_points<Point>(uniform_points(400, 31));
+  const std::vector<Point> nearly_flat = {Point(49.2559, 29.1767, 6.7723), Point(49.3696, 31.4775, 5.33777),
+                                          Point(49.4264, 32.6279, 4.6205), Point(49.3127, 30.3271, 6.05503)};
+  return alpha_shape_of<CGAL::Tag_false, Dt<K, typename Alpha_tds<CGAL::Tag_false>::type>>(points) +
+         alpha_shape_of<CGAL::Tag_true, Dt<K, typename Alpha_tds<CGAL::Tag_true>::type>>(points) +
+         alpha_shape_of<CGAL::Tag_true, Dt<K, typename Alpha_tds<CGAL::Tag_true>::type>>(nearly_flat);
+}
+
+// Linear_cell_complex's import, as CGAL's voronoi_3 example calls it: it
+// keys std::maps by Cell_handle and looks Cell_iterators up in them.  Then
+// CGAL's Unique_hash_map over handles, looked up by copies of the handles.
+template <class Triangulation>
+std::string linear_cell_complex_import()
+{
+  typedef CGAL::Linear_cell_complex_for_combinatorial_map<3> Lcc;
+  const std::vector<Point> points = to_points<Point>(uniform_points(300, 32));
+  const Triangulation T(points.begin(), points.end());
+  Lcc lcc;
+  std::map<typename Triangulation::Cell_handle, typename Lcc::Dart_handle> dart_of_cell;
+  CGAL::import_from_triangulation_3(lcc, T, &dart_of_cell);
+  std::ostringstream os;
+  lcc.display_characteristics(os) << ", valid " << lcc.is_valid() << ", cells " << dart_of_cell.size() << '\n';
+  CGAL::Unique_hash_map<typename Triangulation::Cell_handle, int> number(-1);
+  int n = 0;
+  for(typename Triangulation::Cell_iterator c = T.cells_begin(); c != T.cells_end(); ++c) number[c] = n++;
+  std::size_t symmetric = 0;
+  for(typename Triangulation::Cell_handle c : T.all_cell_handles())
+    for(int i = 0; i < 4; ++i) {
+      const typename Triangulation::Cell_handle d = c->neighbor(i);
+      if(number[d] >= 0 && number[d->neighbor(d->index(c))] == number[c]) ++symmetric;
+    }
+  os << n << " cells numbered, " << symmetric << " neighbour pairs found back\n";
+  return os.str();
+}
+
 template <class Cgal, class Fast, class Program>
 void expect_same_output(Program program_of)
 {
@@ -662,6 +743,19 @@ TEST(CgalUserPrograms, UserCellBase)
   FDT3_SAME_OUTPUT(Cgal_cells, Fast_cells, cell_depths);
   FDT3_SAME_OUTPUT(Cgal_cells, Fast_cells, adding_handles);
   EXPECT_NE(cell_depths<Fast_cells>().find("parents 1 circumcenter 1"), std::string::npos);
+}
+
+TEST(CgalPackages, AlphaShape3)
+{
+  const std::string cgal = alpha_shapes<CGAL::Delaunay_triangulation_3>();
+  EXPECT_NE(cgal.find("solid components 1"), std::string::npos) << cgal;
+  EXPECT_EQ(alpha_shapes<CGAL::Fast_Delaunay_triangulation_3>(), cgal);
+}
+
+TEST(CgalPackages, LinearCellComplexImport)
+{
+  FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, linear_cell_complex_import);
+  EXPECT_NE(linear_cell_complex_import<Fast_dt>().find("valid 1"), std::string::npos);
 }
 
 TEST(CgalUserPrograms, FindConflicts) { FDT3_SAME_OUTPUT(Cgal_dt, Fast_dt, conflicts); }

@@ -56,8 +56,19 @@ struct Default_vertex_conversion
   template <class Source_vertex, class Vertex>
   void operator()(const Source_vertex& source, Vertex& copy) const
   {
-    copy.point() = source.point();
+    set_point(copy, source.point(), 0);
     copy_info(source, copy, 0);
+  }
+  // A vertex of a user base takes its point by set_point(), as CGAL's.
+  template <class Vertex, class P>
+  static auto set_point(Vertex& copy, const P& p, int) -> decltype(copy.set_point(p), void())
+  {
+    copy.set_point(p);
+  }
+  template <class Vertex, class P>
+  static void set_point(Vertex& copy, const P& p, long)
+  {
+    copy.point() = p;
   }
   template <class S, class T>
   static auto copy_info(const S& source, T& copy, int) -> decltype(copy.info() = source.info(), void())

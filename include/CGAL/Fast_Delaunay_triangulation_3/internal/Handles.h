@@ -90,9 +90,9 @@ Index previous_index(const Anchor& a, Vertex_kind, Index v)
 // (Data_structure_copy.h: the anchor being filled takes it).  Any other
 // assignment throws std::logic_error: a vertex of a triangulation moves
 // through move(), and a silent write to a temporary would leave the user
-// believing it moved.  Handles of user vertex bases give non-const vertices,
-// so this is what their `v->point()` is: being a Point, it goes wherever
-// the point went before (template arguments, comparisons, members).
+// believing it moved.  Being a Point, it goes wherever the point went
+// before (template arguments, comparisons, members).  (A vertex of a user
+// base holds its point and sets it with set_point(): User_bases.h.)
 template <class Anchor, class Point>
 class Vertex_point_reference : public Point
 {

@@ -142,6 +142,14 @@ public:
       }
   }
 
+  // Vertex v (same id) now stands at p: a move, or a vertex of
+  // tds().create_vertex() placed by insert_in_hole.
+  void point_replaced(Vertex_id v, const Point& p)
+  {
+    kernel_points.replace(v, p);
+    user_vertices.point_replaced(this, v);
+  }
+
   // ---------------------------------------------------------------- copies of another data structure
   // An anchor filled by copy_data_structure (Data_structure_copy.h) takes
   // the points its conversion functors assign (Vertex_point_reference):

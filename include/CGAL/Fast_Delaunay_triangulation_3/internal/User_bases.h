@@ -135,12 +135,22 @@ public:
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Anchor Anchor;
 
-  Point point() const { return tr_->point_of(id_); }
-  Vertex_point_reference<Anchor, Point> point() { return {tr_, id_}; }
+  // A reference, as CGAL's: code keeps references to points (CGAL's
+  // Alpha_shape_3 in its exact comparison mode evaluates lazily from them).
+  // The record holds a copy of its vertex's point, which the anchor renews
+  // when the vertex moves (Storage_anchor::point_replaced).
+  const Point& point() const { return point_; }
+  // Only while the triangulation copies another data structure
+  // (Data_structure_copy.h): the copy's point.  Otherwise it throws
+  // std::logic_error, as a vertex moves through move().
+  void set_point(const Point& p)
+  {
+    tr_->assign_point(id_, p);
+    point_ = p;
+  }
   Cell_handle cell() const { return tr_->incident_cell_of(id_); }
-  // The triangulation owns points and adjacency: a vertex cannot be moved or
-  // re-attached through its handle.
-  void set_point(const Point&) = delete;
+  // The triangulation owns the adjacency: a vertex cannot be re-attached
+  // through its handle.
   void set_cell(Cell_handle) = delete;
   template <class T = Tr>
   typename T::Vertex_info& info() const { return tr_->vertex_info(id_); }
@@ -153,11 +163,13 @@ public:
   {
     tr_ = tr;
     id_ = id;
+    point_ = tr->current_point(id);
   }
 
 private:
   const Anchor* tr_ = nullptr;
   Vertex_id id_ = 0;
+  Point point_;
 };
 
 template <class Tr, class Base>
@@ -282,6 +294,13 @@ public:
     infinite_.front().attach_to_triangulation(tr, ghost_vertex);
   }
 
+  // Vertex v stands at another point.
+  template <class Anchor>
+  void point_replaced(const Anchor* tr, Vertex_id v)
+  {
+    if(v < records_.size()) records_[v].attach_to_triangulation(tr, v);
+  }
+
   // After the triangulation's data was copied to another anchor.
   template <class Anchor>
   void attach(const Anchor* tr)
@@ -382,6 +401,8 @@ class User_vertices<void>
 public:
   template <class Anchor>
   void resize(const Anchor*, std::size_t) {}
+  template <class Anchor>
+  void point_replaced(const Anchor*, Vertex_id) {}
   template <class Anchor>
   void attach(const Anchor*) {}
   void clear() {}
