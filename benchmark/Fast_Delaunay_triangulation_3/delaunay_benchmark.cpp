@@ -9,12 +9,14 @@
 //
 // Rows fast-remove / cgal-remove and fast-move / cgal-move (not run by default) time the removal of 10% of the
 // vertices one by one, and the move of 10% by a small random displacement, after an untimed insertion of all points;
+// fast-par-remove / cgal-par-remove the removal of the same 10% as one range, remove(first, last), on --threads;
 // rows fast-epec / cgal-epec (not run by default) time the insertion of the same points as points of CGAL's exact
 // constructions kernel; rows fast-loop / cgal-loop and fast-hint / cgal-hint (not run by default) time insert(p)
 // called once per point, without and with the previous vertex as hint; each is compared with its CGAL counterpart.
 //
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,shell,torus,surface...]|all] [--surface FILE]
-//                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-move,cgal-move,
+//                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-par-remove,
+//                                      cgal-par-remove,fast-move,cgal-move,
 //                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint]
 //                           [--rounds 3] [--threads 1,2] [--phases] [--verbose] [--scalar-paths] [--csv FILE|-]
 //
@@ -312,6 +314,34 @@ Engine_result run_fast_parallel(const Points& points, int threads)
   return insert_and_count(triangulation, points);
 }
 
+// Every tenth vertex removed as one range, remove(first, last), on `threads` threads: CGAL's parallel removal
+// (its lock grid, built before the clock starts, as the insertion is) and ours (slabs of space).
+Engine_result run_cgal_parallel_remove(const Points& points, int threads)
+{
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  Cgal_parallel_dt::Lock_data_structure locks(CGAL::bbox_3(points.begin(), points.end()), 50);
+  Cgal_parallel_dt triangulation(points.begin(), points.end(), &locks);
+  const auto vertices = every_tenth_vertex(triangulation, points);
+  Engine_result result;
+  const Clock::time_point start = Clock::now();
+  triangulation.remove(vertices.begin(), vertices.end());
+  result.seconds = seconds_since(start);
+  result.finite_cells = triangulation.number_of_finite_cells();
+  return result;
+}
+Engine_result run_fast_parallel_remove(const Points& points, int threads)
+{
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  Fast_parallel_dt triangulation(points.begin(), points.end());
+  const auto vertices = every_tenth_vertex(triangulation, points);
+  Engine_result result;
+  const Clock::time_point start = Clock::now();
+  triangulation.remove(vertices.begin(), vertices.end());
+  result.seconds = seconds_since(start);
+  result.finite_cells = triangulation.number_of_finite_cells();
+  return result;
+}
+
 // --verbose: one more run with exactly `threads` partitions (even beyond the cores, as the paper's Table 2 at
 // 8 threads), reporting every attempt of the partitioned insertion.
 Engine_result run_fast_parallel_with_attempts(const Points& points, int threads)
@@ -363,6 +393,10 @@ const std::vector<Engine>& engine_table()
       {"cgal-hint", false, false, run_cgal_hint, "cgal-hint"},
       {"fast-remove", false, false, run_fast_remove, "cgal-remove"},
       {"cgal-remove", false, false, run_cgal_remove, "cgal-remove"},
+#ifdef CGAL_LINKED_WITH_TBB
+      {"fast-par-remove", true, false, run_fast_parallel_remove, "cgal-remove"},
+      {"cgal-par-remove", true, false, run_cgal_parallel_remove, "cgal-remove"},
+#endif
       {"fast-move", false, false, run_fast_move, "cgal-move"},
       {"cgal-move", false, false, run_cgal_move, "cgal-move"},
       {"fast-epec", false, false, run_fast_epec, "cgal-epec"},
@@ -732,11 +766,12 @@ void print_machine(std::FILE* out, const char* prefix)
   std::fprintf(out,
                "%smethod:  every engine run is its own forked process; seconds = insertion into an empty\n"
                "%s         triangulation (-remove, -move rows: removing / moving 10%% of the vertices one by one\n"
-               "%s         after an untimed insertion), median over the rounds, engines interleaved in each;\n"
+               "%s         after an untimed insertion, -par-remove rows: the same 10%% removed as one range),\n"
+               "%s         median over the rounds, engines interleaved in each;\n"
                "%s         fast = ours, 1 thread; peak MiB = the child's max RSS, which includes the input points\n"
                "%s         (generated once in the parent before forking, %zu bytes each) and the baseline process,\n"
                "%s         alike for every engine\n",
-               c, c, c, c, c, sizeof(Point), c);
+               c, c, c, c, c, c, sizeof(Point), c);
 }
 
 // ------------------------------------------------------------------------------------------------ measuring
@@ -1003,15 +1038,15 @@ void print_table(const Measurement& m, int rounds)
               "load average %.2f\n",
               with_commas(m.n).c_str(), m.distribution.c_str(), with_commas(m.input_points).c_str(), rounds,
               rounds == 1 ? "" : "s", mib(m.baseline_kib), m.load_before);
-  std::printf("%-12s %7s %9s %13s %8s %9s %9s %9s %9s\n", "engine", "threads", "seconds", "tetrahedra", "Mtets/s",
+  std::printf("%-15s %7s %9s %13s %8s %9s %9s %9s %9s\n", "engine", "threads", "seconds", "tetrahedra", "Mtets/s",
               "peak MiB", "vs cgal", "vs c-par", "vs 1 thr");
   for(const Row& row : m.rows) {
     if(row.seconds.empty()) {
-      std::printf("%-12s %7d   failed: %s\n", row.label.c_str(), row.threads, row.error.c_str());
+      std::printf("%-15s %7d   failed: %s\n", row.label.c_str(), row.threads, row.error.c_str());
       continue;
     }
     const double t = median(row.seconds);
-    std::printf("%-12s %7d %9.3f %13s %8.2f %9.0f", row.label.c_str(), row.threads, t,
+    std::printf("%-15s %7d %9.3f %13s %8.2f %9.0f", row.label.c_str(), row.threads, t,
                 with_commas(row.finite_cells).c_str(), static_cast<double>(row.finite_cells) / t / 1e6,
                 mib(row.peak_kib));
     for(const double s : {speedup(m, row), speedup_over_cgal_parallel(m, row), speedup_over_one_thread(m, row)})

@@ -756,17 +756,32 @@ public:
     remove_vertex(v, made);
     for(Tet_id t : made) *fit++ = Cell_handle(anchor_.get(), t);
   }
-  // Removes the vertices of [first, last), one by one (CGAL's parallel
-  // removal with a Parallel_tag data structure is not done here); returns
-  // how many went.  All handles are checked first: a bad one, or one given
-  // twice (CGAL's precondition), throws std::invalid_argument before
-  // anything changes.
+  // Removes the vertices of [first, last); returns how many went.  All
+  // handles are checked first: a bad one, or one given twice (CGAL's
+  // precondition), throws std::invalid_argument before anything changes.
+  // With a Parallel_tag data structure (or set_number_of_threads()), as
+  // CGAL's, the removals run on the threads of the caller's TBB arena in
+  // dimension 3 (Parallel_removal.h: slabs of space, each removed by its
+  // own thread when its star stays in its slab, the others one by one
+  // after).
   template <class InputIterator>
   size_type remove(InputIterator first, InputIterator last)
   {
     const std::vector<Vertex_handle> vertices = checked_vertices_to_remove(first, last);
     const size_type before = number_of_vertices();
-    for(Vertex_handle v : vertices) remove(v);
+    const int partitions = partitions_for_insertion();
+    if(dimension() == 3 && partitions > 1 && vertices.size() >= min_vertices_per_removal_partition * 2) {
+      std::vector<Vertex_id> ids, deferred;
+      for(Vertex_handle v : vertices) ids.push_back(v.index());
+      (void)incident_cell_of(ids.front()); // the v->cell() cache, complete
+      std::vector<Tet_id> made;
+      anchor_->core.remove_in_partitions(ids, partitions, min_vertices_per_removal_partition, anchor_->incident_cells,
+                                         deferred, Anchor::keeps_cell_records ? &made : nullptr);
+      anchor_->cells_made_keeping_incident_cells(made);
+      for(Vertex_id v : deferred) remove(Vertex_handle(anchor_.get(), v));
+    } else {
+      for(Vertex_handle v : vertices) remove(v);
+    }
     return before - number_of_vertices();
   }
   // CGAL's remove_cluster: the same result as remove(first, last) (CGAL
@@ -1680,6 +1695,9 @@ public:
   std::size_t slots_of_faces(int face_dimension) const { return anchor_->slots_of_faces(face_dimension); }
 
 private:
+  // Below this many vertices per thread, a range is removed one by one.
+  static constexpr std::size_t min_vertices_per_removal_partition = 256;
+
   int partitions_for_insertion() const
   {
     if(threads_ > 0) return threads_;

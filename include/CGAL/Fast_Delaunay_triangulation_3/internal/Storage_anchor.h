@@ -187,6 +187,20 @@ public:
     vertices_seen_ = core.vertex_slots();
   }
 
+  // Whether new cells need telling (cells_made): infos or user records.
+  static constexpr bool keeps_cell_records =
+      !std::is_void<Cell_info>::value || !std::is_void<typename Tr::User_cell_record>::value;
+  // After removals that kept v->cell() themselves (Parallel_removal.h):
+  // `made` (listed twice, some) start with Info() and default records.
+  void cells_made_keeping_incident_cells(const std::vector<Tet_id>& made)
+  {
+    for(Tet_id t : made) {
+      cell_infos.forget(t);
+      user_cells.forget(t);
+    }
+    vertices_added();
+  }
+
   // ---------------------------------------------------------------- read by handles and iterators
   const Flat_storage& flat_storage() const { return core.mesh; }
   int dimension() const { return core.dimension; }

@@ -24,6 +24,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_displacement.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_removal.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Vertex_removal.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Walk_start_grid.h>
 
@@ -378,6 +379,40 @@ public:
     }
     mesh.kill_vertex(v);
     hint_ = new_cells.front();
+  }
+
+  // Removes what it can of `vertices` (live, distinct; dimension 3) on up
+  // to `partitions` threads (Parallel_removal.h), leaving the others in
+  // `deferred` for remove().  The vertices a round defers lie along the
+  // cuts between its slabs: the next round cuts them across (the longest
+  // axis of what is left), while each thread has at least
+  // `min_per_partition` of them, at most four rounds.  incident_cells:
+  // v->cell() of every vertex, complete, kept so; `made`, unless null: the
+  // new cells still there (one may be listed twice).
+  void remove_in_partitions(const std::vector<Vertex_id>& vertices, int partitions, std::size_t min_per_partition,
+                            std::vector<Tet_id>& incident_cells, std::vector<Vertex_id>& deferred,
+                            std::vector<Tet_id>* made)
+  {
+    CGAL_precondition(dimension == 3);
+    std::vector<Vertex_id> todo = vertices;
+    std::vector<Tet_id> made_in_round;
+    if(made) made->clear();
+    for(int round = 0; round < 4; ++round) {
+      const int used = static_cast<int>(std::min<std::size_t>(std::size_t(partitions), todo.size() / min_per_partition));
+      if(used < 2) break;
+      Parallel_removal::run(mesh, incident_cells, todo, used, deferred, made ? &made_in_round : nullptr);
+      // A cell made in an earlier round may be gone.
+      if(made) {
+        made->erase(std::remove_if(made->begin(), made->end(), [this](Tet_id t) { return !mesh.is_live(t); }),
+                    made->end());
+        made->insert(made->end(), made_in_round.begin(), made_in_round.end());
+      }
+      const bool progress = deferred.size() < todo.size();
+      todo.swap(deferred);
+      if(!progress) break;
+    }
+    deferred.swap(todo);
+    hint_ = mesh.first_live_tet();
   }
 
   // Moves live vertex v to p (finite, not v's point), keeping its id: v is

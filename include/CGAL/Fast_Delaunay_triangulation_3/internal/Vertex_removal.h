@@ -116,10 +116,10 @@ struct Link_numbering
   }
 };
 
-// The star of v (start has v), its link and its boundary facets.
-inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole& hole)
+// The link and the boundary facets of v's star, hole.star being the cells
+// of v (cells_around_vertex).
+inline void carve_found_star(Flat_storage& m, Vertex_id v, Removal_hole& hole)
 {
-  cells_around_vertex(m, start, v, hole.star);
   hole.link.clear();
   hole.boundary.clear();
   hole.finite_star = 0;
@@ -141,26 +141,35 @@ inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole&
   link_id.finish();
 }
 
-namespace vertex_removal_detail {
-
-// Frees the star's slots and counts them out.
-inline void free_star(Flat_storage& m, const Removal_hole& hole)
+// The star of v (start has v), its link and its boundary facets.
+inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole& hole)
 {
-  for(Tet_id t : hole.star) {
+  cells_around_vertex(m, start, v, hole.star);
+  carve_found_star(m, v, hole);
+}
+
+// Where a removal's cells come from and go: the arrays' own free list and
+// counts (one removal at a time), or a partition's pool while several
+// removals run at once (Parallel_removal.h), which must not touch what the
+// others share.
+struct Shared_slots
+{
+  Flat_storage& m;
+
+  void release(Tet_id t)
+  {
     if(m.is_ghost(t)) --m.ghost_tets;
     --m.live_tets;
     m.free_tet(t);
   }
-}
-
-inline void count_in(Flat_storage& m, Tet_id t)
-{
-  ++m.live_tets;
-  if(m.is_ghost(t)) ++m.ghost_tets;
-  if(m.with_sub_determinants) update_sub_determinants(m, t);
-}
-
-} // namespace vertex_removal_detail
+  Tet_id take() { return m.new_tet(); }
+  void count_in(Tet_id t)
+  {
+    ++m.live_tets;
+    if(m.is_ghost(t)) ++m.ghost_tets;
+    if(m.with_sub_determinants) update_sub_determinants(m, t);
+  }
+};
 
 // The Delaunay triangulation of the link's points (its vertex k is link[k]),
 // by the same kernel and predicates as the big one, in arrays kept from one
@@ -258,8 +267,10 @@ struct Hole_filling_buffers
 // facet, across the facets that are not boundary facets: each facet of a
 // cell in the hole is looked up once among the boundary facets of its first
 // vertex (two on average), and the cells outside the hole are not looked at.
-inline bool fill_hole_with_link_cells(Flat_storage& m, const Removal_hole& hole, const Flat_storage& small,
-                                      Hole_filling_buffers& b, std::vector<Tet_id>& new_cells)
+//
+// find_hole_cells finds them (b.inside), write_hole_cells writes them: a
+// caller that must know how many slots it will take looks in between.
+inline bool find_hole_cells(const Removal_hole& hole, const Flat_storage& small, Hole_filling_buffers& b)
 {
   const std::size_t link_size = hole.link.size() + (hole.inner != ghost_vertex);
   b.bucket_start.assign(link_size + 1, 0);
@@ -311,13 +322,18 @@ inline bool fill_hole_with_link_cells(Flat_storage& m, const Removal_hole& hole,
     }
     b.boundary_of.push_back(across);
   }
-  if(found != hole.boundary.size()) return false;
+  return found == hole.boundary.size();
+}
 
-  vertex_removal_detail::free_star(m, hole);
+template <class Slots>
+void write_hole_cells(Flat_storage& m, const Removal_hole& hole, const Flat_storage& small,
+                      Hole_filling_buffers& b, std::vector<Tet_id>& new_cells, Slots&& slots)
+{
+  for(Tet_id t : hole.star) slots.release(t);
   b.slot_of.resize(small.number_of_slots());
   new_cells.clear();
   for(Tet_id s : b.inside) {
-    b.slot_of[s] = m.new_tet();
+    b.slot_of[s] = slots.take();
     new_cells.push_back(b.slot_of[s]);
   }
   for(std::size_t k = 0; k < b.inside.size(); ++k) {
@@ -335,7 +351,14 @@ inline bool fill_hole_with_link_cells(Flat_storage& m, const Removal_hole& hole,
       }
     }
   }
-  for(Tet_id t : new_cells) vertex_removal_detail::count_in(m, t);
+  for(Tet_id t : new_cells) slots.count_in(t);
+}
+
+inline bool fill_hole_with_link_cells(Flat_storage& m, const Removal_hole& hole, const Flat_storage& small,
+                                      Hole_filling_buffers& b, std::vector<Tet_id>& new_cells)
+{
+  if(!find_hole_cells(hole, small, b)) return false;
+  write_hole_cells(m, hole, small, b, new_cells, Shared_slots{m});
   return true;
 }
 
@@ -361,10 +384,11 @@ inline void fill_flat_hole(Flat_storage& m, const Removal_hole& hole, std::vecto
       finite.push_back(&b);
     }
   }
-  vertex_removal_detail::free_star(m, hole);
+  Shared_slots slots{m};
+  for(Tet_id t : hole.star) slots.release(t);
   new_cells.clear();
   for(const Removal_hole::Boundary_facet* b : finite) {
-    const Tet_id t = m.new_tet();
+    const Tet_id t = slots.take();
     new_cells.push_back(t);
     // The key faces away from v, which is now beyond the hull: reversed, it
     // is the base of a ghost on v's side.
@@ -387,7 +411,7 @@ inline void fill_flat_hole(Flat_storage& m, const Removal_hole& hole, std::vecto
     m.neighbor_code(sides[k].code) = sides[k + 1].code;
     m.neighbor_code(sides[k + 1].code) = sides[k].code;
   }
-  for(Tet_id t : new_cells) vertex_removal_detail::count_in(m, t);
+  for(Tet_id t : new_cells) slots.count_in(t);
 }
 
 } // namespace Fast_Delaunay_triangulation_3_internal
