@@ -316,11 +316,9 @@ Engine_result run_fast_parallel(const Points& points, int threads)
 
 // Every tenth vertex removed as one range, remove(first, last), on `threads` threads: CGAL's parallel removal
 // (its lock grid, built before the clock starts, as the insertion is) and ours (slabs of space).
-Engine_result run_cgal_parallel_remove(const Points& points, int threads)
+template <class Triangulation>
+Engine_result remove_tenth_as_range(Triangulation& triangulation, const Points& points)
 {
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-  Cgal_parallel_dt::Lock_data_structure locks(CGAL::bbox_3(points.begin(), points.end()), 50);
-  Cgal_parallel_dt triangulation(points.begin(), points.end(), &locks);
   const auto vertices = every_tenth_vertex(triangulation, points);
   Engine_result result;
   const Clock::time_point start = Clock::now();
@@ -329,17 +327,18 @@ Engine_result run_cgal_parallel_remove(const Points& points, int threads)
   result.finite_cells = triangulation.number_of_finite_cells();
   return result;
 }
+Engine_result run_cgal_parallel_remove(const Points& points, int threads)
+{
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  Cgal_parallel_dt::Lock_data_structure locks(CGAL::bbox_3(points.begin(), points.end()), 50);
+  Cgal_parallel_dt triangulation(points.begin(), points.end(), &locks);
+  return remove_tenth_as_range(triangulation, points);
+}
 Engine_result run_fast_parallel_remove(const Points& points, int threads)
 {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   Fast_parallel_dt triangulation(points.begin(), points.end());
-  const auto vertices = every_tenth_vertex(triangulation, points);
-  Engine_result result;
-  const Clock::time_point start = Clock::now();
-  triangulation.remove(vertices.begin(), vertices.end());
-  result.seconds = seconds_since(start);
-  result.finite_cells = triangulation.number_of_finite_cells();
-  return result;
+  return remove_tenth_as_range(triangulation, points);
 }
 
 // --verbose: one more run with exactly `threads` partitions (even beyond the cores, as the paper's Table 2 at

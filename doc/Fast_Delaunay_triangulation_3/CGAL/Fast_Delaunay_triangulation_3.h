@@ -111,9 +111,20 @@ partitions space instead). Default: `Default`.
   own. Vertex handles stay valid across insertions. A cell handle taken
   before an insertion may name a different cell afterwards, because the
   slots of deleted cells are reused.
-- `Vertex::point()` returns the point by value; the point of the infinite
-  vertex is `Point(0, 0, 0)`.
+- `Vertex::point()` returns the point by value, except for a user vertex
+  base (a `Tds` whose vertex base has members of its own, such as
+  `Alpha_shape_vertex_base_3`), whose vertex holds a copy of its point and
+  returns a reference to it, valid until the vertex moves or the
+  triangulation changes; the point of the infinite vertex is `Point(0, 0, 0)`.
+  A vertex's point changes through `move()`: `v->point() = p` does not
+  compile, and on a vertex object that is not `const`, `v.point() = p` (or
+  `v.set_point(p)` for a user base) throws `std::logic_error`, except during
+  `tds().copy_tds()`, where the conversion functor sets the copy's points.
 - All iterators are bidirectional, as those of `Delaunay_triangulation_3`.
+  As there, `Cell_iterator` (`All_cells_iterator`) is `Cell_handle` and
+  `Vertex_iterator` (`All_vertices_iterator`) is `Vertex_handle`; the finite
+  iterators are other types that convert to handles. CGAL's
+  `Unique_hash_map` works on the handles (hashed by index).
   The cell and vertex iterators dereference to a `Vertex` or `Cell` object
   stored inside the iterator, so `&*it` is valid only as long as `it` is
   unchanged, and a `std::reverse_iterator` over them would hand out a
@@ -122,10 +133,13 @@ partitions space instead). Default: `Default`.
   `Point_iterator` yields points by value.
 - `tds()` returns a view over the flat arrays with the interface of
   `Triangulation_data_structure_3` (counts, raw iterators, adjacency,
-  `create_vertex()`, combinatorial `is_valid()`, 2-3 and 3-2 flips; see the
-  user manual), not a `Triangulation_data_structure_3`: the members that
-  build or rewire cells one by one (`create_cell`, `set_adjacency`,
-  `copy_tds`, `set_infinite_vertex`) are not provided.
+  `create_vertex()`, combinatorial `is_valid()`, 2-3 and 3-2 flips,
+  `copy_tds()` of another data structure, checked to be a Delaunay
+  triangulation of points that are doubles; see the user manual), not a
+  `Triangulation_data_structure_3`: the members that build or rewire cells
+  one by one (`create_cell`, `set_adjacency`) are not provided.
+  `set_infinite_vertex(v)` accepts only the infinite vertex (which
+  `copy_tds()` returns) and throws `std::invalid_argument` otherwise.
 - Finite vertices are enumerated in the order of the vertex ids, which is the
   insertion order chosen by the spatial sort, not the order of the input.
 - A point with a NaN or infinite coordinate makes `insert()` throw
@@ -279,9 +293,9 @@ typedef unspecified_type Insertion_report;
 /// @{
 
 /*!
-All cells, finite and infinite.
+All cells, finite and infinite: `Cell_handle`, as in CGAL.
 */
-typedef unspecified_type All_cells_iterator;
+typedef Cell_handle All_cells_iterator;
 
 /*!
 */
@@ -294,8 +308,9 @@ typedef All_cells_iterator Cell_iterator;
 
 /*!
 All vertices: the infinite vertex first, then the finite vertices.
+`Vertex_handle`, as in CGAL.
 */
-typedef unspecified_type All_vertices_iterator;
+typedef Vertex_handle All_vertices_iterator;
 
 /*!
 */
@@ -669,12 +684,14 @@ Scans the cells in dimension 3.
 Cell_handle infinite_cell() const;
 
 /*!
-The point of vertex `i` of `c`.
+The point of vertex `i` of `c`: a `const Point&` with a user vertex base,
+a `Point` otherwise (see `Vertex::point()` above).
 \pre `c->vertex(i)` is finite.
 */
 Point point(Cell_handle c, int i) const;
 
 /*!
+As `point(c, i)`.
 */
 Point point(Vertex_handle v) const;
 
