@@ -135,6 +135,13 @@ void copy_data_structure(Anchor& target, const Source& source, typename Source::
   }
   if(number_of_vertex.count(infinite) == 0) refuse("the given infinite vertex is not a vertex of the source");
   if(finite_count > max_vertices) refuse("the source has more vertices than this triangulation can hold");
+  // A cell's vertex or neighbour that the source does not list is a
+  // broken source, not the infinite vertex or cell 0.
+  auto vertex_number = [&](const Source_vertex& v) {
+    const auto found = number_of_vertex.find(v);
+    if(found == number_of_vertex.end()) refuse("a cell of the source has a vertex the source does not list");
+    return found->second;
+  };
   std::vector<Source_cell> source_cells;
   std::map<Source_cell, std::size_t> number_of_cell;
   for(auto c = source.cells_begin(); c != source.cells_end(); ++c) {
@@ -151,7 +158,7 @@ void copy_data_structure(Anchor& target, const Source& source, typename Source::
   staged.vertex_infos.resize(finite_count);
   staged.user_vertices.resize(&staged, finite_count);
   for(const Source_vertex& v : source_vertices) {
-    const std::size_t k = number_of_vertex[v];
+    const std::size_t k = vertex_number(v);
     const Vertex_handle copy(&staged, k == 0 ? ghost_vertex : static_cast<Vertex_id>(k - 1));
     (void)convert_vertex(*v);
     with_writable(copy, [&](auto& element) { convert_vertex(*v, element); });
@@ -169,8 +176,10 @@ void copy_data_structure(Anchor& target, const Source& source, typename Source::
     Cell_table table;
     for(const Source_cell& c : source_cells)
       for(int i = 0; i < 4; ++i) {
-        table.vertices.push_back(number_of_vertex[c->vertex(i)]);
-        table.neighbors.push_back(number_of_cell[c->neighbor(i)]);
+        table.vertices.push_back(vertex_number(c->vertex(i)));
+        const auto neighbor = number_of_cell.find(c->neighbor(i));
+        if(neighbor == number_of_cell.end()) refuse("a cell of the source has a neighbour the source does not list");
+        table.neighbors.push_back(neighbor->second);
       }
     Cell_table_assembler assembler;
     if(!assembler.assemble(table, built)) refuse(assembler.error());
@@ -201,7 +210,7 @@ void copy_data_structure(Anchor& target, const Source& source, typename Source::
         })] = t;
     for(std::size_t k = 0; k < source_cells.size(); ++k) {
       const auto found =
-          slot_of_key.find(key_of([&](int i) { return number_of_vertex[source_cells[k]->vertex(i)]; }));
+          slot_of_key.find(key_of([&](int i) { return vertex_number(source_cells[k]->vertex(i)); }));
       if(found == slot_of_key.end())
         refuse("cell " + std::to_string(k) + " of the source is not a cell of the Delaunay triangulation of its points");
       slot_of_cell[k] = found->second;

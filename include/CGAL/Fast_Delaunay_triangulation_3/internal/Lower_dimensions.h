@@ -139,7 +139,7 @@ public:
     vertices_.clear();
     renamed_.clear();
     fresh_.clear();
-    copy_all_cells(m);
+    synchronise(m);
   }
   void stop()
   {
@@ -212,7 +212,7 @@ public:
     }
     if(delaunay_->number_of_vertices() != vertices_before) {
       set_vertex(v, r);
-      if(delaunay_->dimension() != dimension_before) copy_all_cells(m);
+      if(delaunay_->dimension() != dimension_before) synchronise(m);
       else copy_new_cells(m, deleted, r);
     }
     if(around) slots_around(r, *around);
@@ -244,10 +244,11 @@ public:
     if(delaunay_->number_of_vertices() != vertices_before) set_vertex(v, r);
     return id(r);
   }
-  // The cells after insert_unsynchronised calls: a CGAL cell whose slot
-  // still names it keeps it (and its cell info: CGAL changes a segment in
-  // place in dimension 1), slots no cell keeps are freed, new cells take
-  // free slots, and every cell is copied.
+  // Every cell copied again: after insert_unsynchronised calls, a change
+  // of dimension, a removal.  A CGAL cell whose slot still names it keeps it
+  // (and its cell info: CGAL changes a segment in place in dimension 1, a
+  // change of dimension extends every cell), slots no cell keeps are freed,
+  // new cells take free slots, each cell is copied once.
   void synchronise(Flat_storage& m)
   {
     fresh_.clear();
@@ -301,7 +302,7 @@ public:
     fresh_.clear();
     delaunay_->remove(vertices_[v]);
     vertices_[v] = Reference_vertex();
-    copy_all_cells(m);
+    synchronise(m);
     take_fresh_slots(fresh);
   }
   // The slots given to new CGAL cells by the last insertion, removal or rebuild.
@@ -431,18 +432,6 @@ private:
     for(Reference_cell c : deleted) freed.push_back(slot(c));
     resynchronise(m, freed, changed);
   }
-  // After a change of dimension every cell is new or changed.
-  void copy_all_cells(Flat_storage& m)
-  {
-    std::vector<Tet_id> freed;
-    for(Tet_id t = 0; t < m.number_of_slots(); ++t)
-      if(m.is_live(t)) freed.push_back(t);
-    std::vector<Reference_cell> changed;
-    for(auto c = delaunay_->tds().raw_cells_begin(); c != delaunay_->tds().raw_cells_end(); ++c)
-      changed.push_back(c);
-    resynchronise(m, freed, changed);
-  }
-
   // `changed`: the CGAL cells to copy again (new or modified); `released`:
   // slots whose cells may be gone.  A cell keeps its slot while the slot
   // still names it (so its cell info survives, as in CGAL); the released
