@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -84,6 +85,11 @@ struct Insertion_scratch
   Raw_array<Facet_code> boundary_inner;  // the same facets seen from the cavity, while searching
   Raw_array<Tet_id> ball;              // slots of the new tetrahedra
   Raw_array<Vertex_id> boundary_vertices;  // numbered cavity boundary vertices, in order
+  // Where Partition_ownership_three_of_four's kernel writes the marks of a
+  // tetrahedron it does not own (never read).
+  Vertex_id unused_marks[2] = {0, 0};
+  // Those of another partition, with their numbers (Partition_ownership_three_of_four).
+  std::vector<std::pair<Vertex_id, std::uint8_t>> foreign_boundary_vertices;
   struct Half_edge { std::uint64_t key; Facet_code facet; };
   std::vector<Half_edge> large_edges;     // hash table of the large cavities' edges
   Facet_code edge_table[table_size * table_size];
@@ -155,12 +161,15 @@ inline void make_initial_tetrahedron(Flat_storage& mesh, Vertex_id simplex[4])
 }
 
 // Which tetrahedra a kernel may walk through, delete and refill (paper §3.2).
-// Sequentially, all of them.
+// Sequentially, all of them.  `shares_neighbors`: whether a tetrahedron next
+// to a cavity may at the same time be next to another kernel's cavity.
 struct Sequential_ownership
 {
   static constexpr bool partitioned = false;
+  static constexpr bool shares_neighbors = false;
   bool owns(const Flat_storage&, Tet_id) const { return true; }
   bool owns_across(const Vertex_id*, int) const { return true; }
+  bool owns_vertex(Vertex_id) const { return true; }
 };
 
 // In a partitioned insertion, a tetrahedron belongs to a thread when all its
@@ -168,12 +177,12 @@ struct Sequential_ownership
 // the buffer zone) are never modified, so threads never touch the same
 // tetrahedron: an outside neighbour of a cavity shares a facet of three owned
 // vertices with it, hence cannot have three vertices of another partition.
-// The paper's rule (three of four vertices) would not do here: a tetrahedron
-// with two vertices of each of two partitions could be just outside a cavity
-// of each, and the kernel writes its mark and neighbour codes there.
+// The mesher's refinement uses this rule: its cavities also write the
+// subdomain and constraint entries of the tetrahedra around them.
 struct Partition_ownership
 {
   static constexpr bool partitioned = true;
+  static constexpr bool shares_neighbors = false;
   const std::uint8_t* partition_of_vertex = nullptr;
   std::uint8_t partition = 0;
 
@@ -193,6 +202,58 @@ struct Partition_ownership
   {
     const Vertex_id w = tv[i] == ghost_vertex ? tv[0] : tv[i];
     return partition_of_vertex[w] == partition;
+  }
+  bool owns_vertex(Vertex_id v) const { return partition_of_vertex[v] == partition; }
+};
+
+// The paper's rule, for Delaunay insertion: a tetrahedron belongs to a thread
+// when at most one of its four vertices is not in the thread's partition
+// (the ghost counts as not in it).  Two threads never own the same
+// tetrahedron, and a neighbour of an owned one (it shares two owned
+// vertices) is never another thread's.  On points sampled from a surface
+// this is what lets partitions work at all: a tetrahedron inside the
+// surface joins a surface triangle to a vertex anywhere across the volume,
+// so requiring all four vertices fails about every other insertion.
+// The price: a tetrahedron with two vertices of each of two partitions may
+// be just outside a cavity of each at once.  The kernel then leaves it
+// unmarked (it is tested again if met again), both threads write only their
+// own facet's neighbour code there (atomically, each word by one writer),
+// and a cavity's boundary vertex of another partition is numbered in the
+// thread's scratch, not in the vertex's shared scratch word.
+struct Partition_ownership_three_of_four
+{
+  static constexpr bool partitioned = true;
+  static constexpr bool shares_neighbors = true;
+  const std::uint8_t* partition_of_vertex = nullptr;
+  std::uint8_t partition = 0;
+
+  bool owns_vertex(Vertex_id v) const { return partition_of_vertex[v] == partition; }
+  // The ghost counts as outside every partition.
+  bool owns_any_vertex(Vertex_id v) const
+  {
+    const bool finite = v != ghost_vertex;
+    return finite & (partition_of_vertex[finite ? v : 0] == partition);
+  }
+  // Bit i: whether tv[i] is in the partition (marks ignored).
+  unsigned owned_vertex_bits(const Vertex_id* tv) const
+  {
+    unsigned bits = 0;
+    for(int i = 0; i < 4; ++i) bits |= unsigned(owns_any_vertex(tv[i] & ~mark_bit)) << i;
+    return bits;
+  }
+  bool owns(const Flat_storage& m, Tet_id t) const { return __builtin_popcount(owned_vertex_bits(m.vertex_ids(t))) >= 3; }
+  // Bit f: whether the facet opposite vertex f of an owned tetrahedron has its
+  // three vertices in the partition.  A neighbour across such a facet is
+  // owned whatever its fourth vertex; across the others, when its fourth
+  // vertex is in the partition (one lookup per neighbour, as with
+  // Partition_ownership).
+  static unsigned owned_facet_bits(unsigned owned_vertices)
+  {
+    return owned_vertices == 15u ? 15u : (~owned_vertices & 15u);
+  }
+  bool owns_across(const Vertex_id* tv, int i, unsigned owned_facets_of_entered_from, int crossed) const
+  {
+    return ((owned_facets_of_entered_from >> crossed) & 1u) | owns_any_vertex(tv[i]);
   }
 };
 
@@ -325,7 +386,24 @@ public:
         certified_facet_sides_of_records(w[0], w[1], w[2], w[3], p, filter_.orientation, beyond, before);
 #endif
       Tet_id next = Tet_id(-1);
-      int entry = 0; // the facet of `next` shared with t
+      // Partitioned: a facet p lies beyond may lead to a tetrahedron the
+      // kernel does not own; the walk then takes another such facet if one
+      // leads to an owned one (any choice among the facets p lies beyond
+      // terminates in a Delaunay triangulation), and fails only if none does.
+      bool blocked = false;
+      unsigned owned_facets = 0; // Partition_ownership_three_of_four's bits of t
+      if constexpr(Ownership::shares_neighbors)
+        owned_facets = Ownership::owned_facet_bits(ownership_.owned_vertex_bits(tv));
+      auto step_to = [&](Tet_id u, Facet_code code, int f) __attribute__((always_inline)) {
+        bool owned;
+        if constexpr(Ownership::shares_neighbors)
+          owned = ownership_.owns_across(m_.vertex_ids(u), facet_of(code), owned_facets, f);
+        else
+          owned = ownership_.owns_across(m_.vertex_ids(u), facet_of(code));
+        if(owned) next = u;
+        else blocked = true;
+        return owned;
+      };
       for(int k = 0; k < 4; ++k) {
         const int f = (first + k) & 3;
         const Facet_code code = m_.neighbor_code(t, f);
@@ -333,22 +411,19 @@ public:
         if(u == previous) continue;
         if constexpr(Paths::avx2) {
           if(beyond & (1 << f)) {
-            next = u;
-            entry = facet_of(code);
-            break;
+            if(step_to(u, code, f)) break;
+            continue;
           }
           if(before & (1 << f)) continue;
         }
         const double* q[4] = {w[0], w[1], w[2], w[3]};
         q[f] = p;
-        if(orientation(filter_, q[0], q[1], q[2], q[3]) < 0) {
-          next = u;
-          entry = facet_of(code);
-          break;
-        }
+        if(orientation(filter_, q[0], q[1], q[2], q[3]) < 0 && step_to(u, code, f)) break;
       }
-      if(next == Tet_id(-1)) break;
-      if(!ownership_.owns_across(m_.vertex_ids(next), entry)) return no_tet;
+      if(next == Tet_id(-1)) {
+        if(Ownership::partitioned && blocked) return no_tet;
+        break;
+      }
       previous = t;
       t = next;
       if(++steps > step_limit) return Walk::gives_up ? no_tet : locate_by_scan(p);
@@ -398,6 +473,7 @@ public:
   // when a partition's slot supply cannot provide the extra tetrahedra.
   bool fill_hole(Vertex_id v, const Tet_id* cells, std::size_t n)
   {
+    static_assert(!Ownership::shares_neighbors, "a hole of its own is filled under Partition_ownership");
     s_.cavity.resize(n);
     std::copy(cells, cells + n, s_.cavity.begin());
     s_.boundary_inner.clear();
@@ -486,7 +562,8 @@ private:
     // as the next queue entry and as the next boundary candidate, and only
     // the counts move with it.  Boundary records, whose vertex numbering
     // branches, are built after the search (complete_boundary).
-    auto visit = [&](Tet_id t, int f) __attribute__((always_inline)) {
+    // owned_facets: Partition_ownership_three_of_four's bits for t.
+    auto visit = [&](Tet_id t, int f, unsigned owned_facets) __attribute__((always_inline)) {
       const Facet_code code = m_.neighbor_code(t, f);
       const Tet_id u = tet_of(code);
       Vertex_id* uv = m_.tets[u].v;
@@ -497,15 +574,24 @@ private:
         ++s_.stats.conflict_tests;
         // Partitioned: ownership is read whatever the outcome, so that the
         // only branch is on the rare foreign conflict, not on the coin toss.
-        const bool owned = ownership_.owns_across(uv, facet_of(code));
+        bool owned;
+        if constexpr(Ownership::shares_neighbors) {
+          owned = ownership_.owns_across(uv, facet_of(code), owned_facets, f);
+        } else {
+          owned = ownership_.owns_across(uv, facet_of(code));
+        }
         conflict = in_conflict(u, p);
         if(Ownership::partitioned && (conflict & !owned)) {
           complete = false;
           return;
         }
-        uv[0] |= static_cast<Vertex_id>(conflict) << 31;
-        uv[1] |= static_cast<Vertex_id>(!conflict) << 31;
         cavity_ghosts_ += conflict & (uv[3] == ghost_vertex);
+        // A tetrahedron another kernel may meet too is never written, not
+        // even with an unchanged mark: the marks go to a scratch word then.
+        Vertex_id* marks = uv;
+        if constexpr(Ownership::shares_neighbors) marks = owned ? uv : s_.unused_marks;
+        marks[0] |= static_cast<Vertex_id>(conflict) << 31;
+        marks[1] |= static_cast<Vertex_id>(!conflict) << 31;
       }
       prefetch_neighbors(u);
       // Queued as the facet through which it was entered, which the search
@@ -519,7 +605,7 @@ private:
     cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
     m_.mark_free(start);
     queue[queued++] = start;
-    for(int f = 0; f < 4 && complete; ++f) visit(start, f);
+    for(int f = 0; f < 4 && complete; ++f) visit(start, f, owned_facet_bits(start));
     for(std::size_t k = 1; k < queued && complete; ++k) {
       if(queued + 3 > cavity.size()) {
         cavity.resize(2 * cavity.size());
@@ -532,9 +618,10 @@ private:
       const Facet_code entered = static_cast<Facet_code>(queue[k]);
       const Tet_id t = tet_of(entered);
       const int back = facet_of(entered);
-      visit(t, (back + 1) & 3);
-      visit(t, (back + 2) & 3);
-      visit(t, (back + 3) & 3);
+      const unsigned owned_facets = owned_facet_bits(t);
+      visit(t, (back + 1) & 3, owned_facets);
+      visit(t, (back + 2) & 3, owned_facets);
+      visit(t, (back + 3) & 3, owned_facets);
     }
     for(std::size_t k = 1; k < queued; ++k) queue[k] = tet_of(static_cast<Facet_code>(queue[k]));
     cavity.resize(queued);
@@ -561,10 +648,11 @@ private:
     s_.boundary_vertices.resize(found + 4);
     numbered_ = s_.boundary_vertices.data();
     numbered_count_ = 0;
+    s_.foreign_boundary_vertices.clear();
     for(std::size_t k = 0; k < found; ++k) {
       const Facet_code code = s_.boundary_inner[k];
       const Facet_code outside = m_.neighbor_code(code);
-      m_.unmark_outside(tet_of(outside));
+      unmark_outside(tet_of(outside));
       write_boundary_facet(facets[k], tet_of(code), facet_of(code), outside);
     }
     s_.boundary_vertices.resize(numbered_count_);
@@ -576,7 +664,7 @@ private:
   void prefetch_neighbors(Tet_id t) const
   {
     const Facet_code* n = m_.tets[t].n;
-    for(int f = 0; f < 4; ++f) __builtin_prefetch(&m_.tets[tet_of(n[f])]);
+    for(int f = 0; f < 4; ++f) __builtin_prefetch(&m_.tets[tet_of(load_neighbor_code(n + f))]);
   }
 
   // Puts back what an interrupted search changed: the cavity and outside
@@ -584,7 +672,23 @@ private:
   void undo_search()
   {
     for(Tet_id t : s_.cavity) m_.unmark_free(t);
-    for(Facet_code code : s_.boundary_inner) m_.unmark_outside(tet_of(m_.neighbor_code(code)));
+    for(Facet_code code : s_.boundary_inner) unmark_outside(tet_of(m_.neighbor_code(code)));
+  }
+
+  // Partition_ownership_three_of_four's facet bits of the owned tetrahedron t.
+  unsigned owned_facet_bits(Tet_id t) const
+  {
+    if constexpr(Ownership::shares_neighbors)
+      return Ownership::owned_facet_bits(ownership_.owned_vertex_bits(m_.vertex_ids(t)));
+    (void)t;
+    return 0;
+  }
+
+  // Without writing to a tetrahedron that was not marked: it may be another
+  // kernel's neighbour too (Partition_ownership_three_of_four).
+  void unmark_outside(Tet_id t)
+  {
+    if(!Ownership::shares_neighbors || m_.is_marked_outside(t)) m_.unmark_outside(t);
   }
 
   // Puts back what a complete CAVITY changed: cavity marks and boundary
@@ -637,7 +741,7 @@ private:
       return false;
     }
     take_ball_slots(facets);
-    if(s_.boundary_vertices.size() < Insertion_scratch::table_size) {
+    if(s_.boundary_vertices.size() + s_.foreign_boundary_vertices.size() < Insertion_scratch::table_size) {
       glue_with_table(p);
       ++s_.stats.small_cavities;
     } else {
@@ -668,9 +772,24 @@ private:
     Tet_record& r = m_.tets[t];
     r.v[0] = p; r.v[1] = b.v[0]; r.v[2] = b.v[1]; r.v[3] = b.v[2];
     r.n[0] = b.outside;
-    m_.neighbor_code(b.outside) = facet_code(t, 0);
+    store_neighbor_code(&m_.neighbor_code(b.outside), facet_code(t, 0));
     if(b.v[2] == ghost_vertex) ++s_.ghost_delta;
     if(m_.with_sub_determinants) update_sub_determinants(m_, t);
+  }
+
+  // The neighbour codes of a tetrahedron outside a cavity: with
+  // Partition_ownership_three_of_four another kernel may write another of
+  // them at the same time (each code has one writer).  Relaxed atomics are
+  // plain moves on x86-64 and say so to the compiler and ThreadSanitizer.
+  static Facet_code load_neighbor_code(const Facet_code* code)
+  {
+    if constexpr(Ownership::shares_neighbors) return __atomic_load_n(code, __ATOMIC_RELAXED);
+    return *code;
+  }
+  static void store_neighbor_code(Facet_code* code, Facet_code value)
+  {
+    if constexpr(Ownership::shares_neighbors) __atomic_store_n(code, value, __ATOMIC_RELAXED);
+    else *code = value;
   }
 
   // Local numbers 1..31 of the cavity boundary vertices, for the adjacency
@@ -685,15 +804,37 @@ private:
   std::uint8_t number_vertex(Vertex_id v)
   {
     if(v == ghost_vertex) return 0;
+    if constexpr(Ownership::shares_neighbors) {
+      if(!ownership_.owns_vertex(v)) return number_foreign_vertex(v);
+    }
     std::uint64_t& tag = m_.vertices[v].scratch;
     const std::uint64_t old = tag;
     const bool fresh = old == 0;
     numbered_[numbered_count_] = v;
     numbered_count_ += fresh;
     const std::uint64_t number =
-        fresh ? std::min<std::uint64_t>(numbered_count_, Insertion_scratch::table_size - 1) : old;
+        fresh ? std::min<std::uint64_t>(numbers_given(), Insertion_scratch::table_size - 1) : old;
     tag = number;
     return static_cast<std::uint8_t>(number);
+  }
+
+  // A boundary vertex of another partition (a few per cavity at most), whose
+  // scratch word that partition's kernel may be using: numbered here.
+  __attribute__((noinline)) std::uint8_t number_foreign_vertex(Vertex_id v)
+  {
+    for(const auto& numbered : s_.foreign_boundary_vertices)
+      if(numbered.first == v) return numbered.second;
+    s_.foreign_boundary_vertices.emplace_back(v, std::uint8_t(0));
+    const std::uint8_t number =
+        static_cast<std::uint8_t>(std::min<std::size_t>(numbers_given(), Insertion_scratch::table_size - 1));
+    s_.foreign_boundary_vertices.back().second = number;
+    return number;
+  }
+
+  // How many boundary vertices have a number so far.
+  std::size_t numbers_given() const
+  {
+    return numbered_count_ + (Ownership::shares_neighbors ? s_.foreign_boundary_vertices.size() : 0);
   }
 
   // Every table entry read in the second pass was written in the first: the

@@ -6,10 +6,12 @@
 // The points of a BRIO round are cut into `partitions` runs of equal size
 // along the Moore curve; every vertex of the mesh belongs to the partition
 // whose key range holds its own Moore key.  Each partition is inserted by one
-// task with the ordinary kernel, restricted to the tetrahedra whose vertices
-// are all in its partition (Partition_ownership): an insertion whose walk or
-// cavity reaches another tetrahedron is aborted and kept for the next
-// attempt.  Later attempts change the partitions with a new coordinate
+// task with the ordinary kernel, restricted to the tetrahedra it owns: for
+// Delaunay insertion those with at most one vertex outside its partition
+// (the paper's rule, Partition_ownership_three_of_four), for the mesher's
+// refinement those with all their vertices in it (Partition_ownership).  An
+// insertion whose walk or cavity reaches another tetrahedron is aborted and
+// kept for the next attempt.  Later attempts change the partitions with a new coordinate
 // transform of the curve's grid and a circular shift of the curve (§3.3); the
 // number of partitions halves when fewer than 1/5 of the attempts succeed or
 // fewer than `min_points_per_partition` points per partition remain, down to
@@ -57,6 +59,7 @@ struct Partition_round
   std::size_t inserted = 0;        // inserted (duplicates included)
   int partitions = 1;              // 1: sequential
   std::size_t mesh_vertices = 0;   // vertices in the mesh before the attempt
+  int papers_rule_partitions = 0;  // partitions that went on under the paper's ownership rule
   double seconds = 0;
 };
 
@@ -101,6 +104,8 @@ struct Partition_slots
 
 // The per-point step of Partitioned_insertion, here the Delaunay kernel's.
 // A policy provides
+//   shares_neighbors_allowed   whether its kernels may run under
+//                              Partition_ownership_three_of_four;
 //   Kernel<Ownership, Slots, Paths>
 //                              the kernel a partition (or the sequential
 //                              finish) runs, with the predicates' forms
@@ -115,6 +120,7 @@ struct Partition_slots
 //                              follows v in its run (or null).
 struct Delaunay_point_insertion
 {
+  static constexpr bool shares_neighbors_allowed = true;
   template <class Ownership, class Slots, class Paths = Default_paths>
   using Kernel = Delaunay_kernel<Ownership, Slots, Walk_to_the_end, Paths>;
 
@@ -140,6 +146,16 @@ public:
   // any other conflict.  The slots a partition leaves unused are marked free,
   // which touches their pages: a larger margin costs resident memory.
   static constexpr std::size_t fresh_slots_per_point = 7;
+  // A partition starts under the strict ownership rule (Partition_ownership),
+  // whose kernel is the faster per point (by about 20% on 2 threads and
+  // uniform points, where the strict rule fails 5% of a big round); when
+  // more than a quarter of its points so far have failed, checked every
+  // `strict_rule_window` points from the fourth window on, it goes on under
+  // the paper's rule (Partition_ownership_three_of_four) to the end of the
+  // attempt: on points near a sphere the strict rule fails 52% of the big
+  // round, the paper's 18%.  (A partition's failures gather where its run
+  // starts and ends, along the cuts: a single window says little.)
+  static constexpr std::size_t strict_rule_window = 1024;
 
   Partitioned_insertion(Flat_storage& mesh, const Static_filter& filter,
                         const Sub_determinant_filter& sub_filter, const double box_lo[3],
@@ -196,6 +212,7 @@ public:
         std::vector<Vertex_id> failed;
         insert_partitioned(points, partitions, attempt++, rotated, first_new, duplicate_of, failed, stats, policy);
         row.inserted = points.size() - failed.size();
+        row.papers_rule_partitions = papers_rule_partitions_;
         points.swap(failed);
         if(5 * row.inserted < row.points) partitions /= 2;
       }
@@ -235,13 +252,21 @@ private:
   // the kernel could not take go to `failures`.  Each insertion also sees
   // the next point, which the Delaunay kernel's hint aims at.
   // With `report`, it follows the points done every progress_step points
-  // (the loop is cut into chunks: nothing more per point).
+  // (the loop is cut into chunks: nothing more per point), counting
+  // `done_before` points done before `begin`.  With `window` > 0 the loop
+  // stops once more than a quarter of the points so far failed, checked
+  // every `window` points from the fourth on, and returns where it stopped
+  // (else `end`).
   template <class Policy, class Kernel>
-  void insert_run(Policy& policy, Kernel& kernel, int partition, const Vertex_id* begin, const Vertex_id* end,
-                  Vertex_id first_new, std::vector<Vertex_id>& duplicate_of, Tet_id& hint,
-                  std::vector<Vertex_id>& failures, const std::function<void(std::size_t)>* report = nullptr) const
+  const Vertex_id* insert_run(Policy& policy, Kernel& kernel, int partition, const Vertex_id* begin,
+                              const Vertex_id* end, Vertex_id first_new, std::vector<Vertex_id>& duplicate_of,
+                              Tet_id& hint, std::vector<Vertex_id>& failures,
+                              const std::function<void(std::size_t)>* report = nullptr, std::size_t window = 0,
+                              std::size_t done_before = 0) const
   {
-    const std::size_t chunk = report ? progress_step : std::size_t(end - begin);
+    const std::size_t failures_before = failures.size();
+    std::size_t chunk = report ? progress_step : std::size_t(end - begin);
+    if(window > 0) chunk = std::min(chunk, window);
     for(const Vertex_id* chunk_begin = begin; chunk_begin != end;) {
       const Vertex_id* chunk_end = chunk_begin + std::min<std::size_t>(chunk, std::size_t(end - chunk_begin));
       for(const Vertex_id* v = chunk_begin; v != chunk_end; ++v) {
@@ -252,9 +277,14 @@ private:
         if(r == Insertion_result::duplicate) duplicate_of[*v - first_new] = existing;
         else if(r == Insertion_result::aborted) failures.push_back(*v);
       }
+      if(report && std::size_t(chunk_end - begin + done_before) % progress_step == 0)
+        (*report)(std::size_t(chunk_end - begin) + done_before);
+      const std::size_t done = std::size_t(chunk_end - begin);
+      if(window > 0 && done >= 4 * window && 4 * (failures.size() - failures_before) > done) return chunk_end;
       chunk_begin = chunk_end;
-      if(report) (*report)(std::size_t(chunk_end - begin));
     }
+    if(report) (*report)(std::size_t(end - begin) + done_before);
+    return end;
   }
 
   template <class Policy>
@@ -299,20 +329,53 @@ private:
   // of the retried points settle instead of 78.7% with a random transform).
   // With more partitions the same shift (half a partition) brings cuts back
   // onto old ones (8 partitions: 26% instead of 71%): they stay random.
+  // The first two attempts of 2 partitions take the two cuts in the order
+  // choose_first_cut found best.
   Curve_transform transform_for(int attempt, int partitions, int key_bits) const
   {
     Curve_transform c;
-    if(attempt == 0) return c;
-    if(attempt == 1 && partitions == 2) {
-      c.shift = std::uint64_t(1) << (key_bits - 2);
+    if(partitions == 2 && attempt <= 1) {
+      if((attempt == 1) != quarter_cut_first_) c.shift = std::uint64_t(1) << (key_bits - 2);
       return c;
     }
+    if(attempt == 0) return c;
     std::mt19937_64 rng(seed_ * 0x9e3779b97f4a7c15ull + std::uint64_t(attempt));
     std::uniform_real_distribution<double> split(0.2, 0.8);
     for(double& s : c.split) s = split(rng);
     c.shift = rng();
     return c;
   }
+
+  // Which of the two perpendicular cuts of 2 partitions the first attempt
+  // takes: the one fewer tetrahedra of the mesh so far cross (their vertices
+  // in both partitions; a sample of the slots).  The curve's halves are
+  // fixed planes of the grid, whatever the points: on points near a torus
+  // lying in the plane of one cut, nearly every tetrahedron inside the tube
+  // crosses it, and the other cut leaves the points 2.3 times fewer
+  // failures.  Costs the vertex partitions of both cuts, once per round.
+  void choose_first_cut(const std::vector<Vertex_id>& points, int partitions, bool rotated)
+  {
+    quarter_cut_first_ = false;
+    if(partitions != 2 || m_.live_tets < 64 * first_cut_sample) return;
+    std::size_t crossing[2];
+    for(int quarter = 0; quarter < 2; ++quarter) {
+      quarter_cut_first_ = quarter == 1;
+      const Attempt_curve keys(lo_, hi_, transform_for(0, partitions, 3 * Attempt_curve::bits));
+      const Attempt_cut plan = rotated ? cut_rotated(m_, points, partitions, keys)
+                                       : cut_by_sorting(m_, points, partitions, keys);
+      assign_vertex_partitions(mesh_vertex_end(points), partitions, keys, plan.first_key);
+      crossing[quarter] = 0;
+      for(Tet_id t = 0; t < m_.number_of_slots(); t += first_cut_sample) {
+        if(!m_.is_live(t) || m_.is_ghost(t)) continue;
+        const Vertex_id* tv = m_.vertex_ids(t);
+        const std::uint8_t j = partition_of_vertex_[tv[0]];
+        crossing[quarter] += (partition_of_vertex_[tv[1]] != j) | (partition_of_vertex_[tv[2]] != j) |
+                             (partition_of_vertex_[tv[3]] != j);
+      }
+    }
+    quarter_cut_first_ = crossing[1] < crossing[0];
+  }
+  static constexpr Tet_id first_cut_sample = 7;
 
   // Keys of the curve of one attempt, over the engine's grid.
   struct Attempt_curve
@@ -540,6 +603,7 @@ private:
                           Vertex_id first_new, std::vector<Vertex_id>& duplicate_of,
                           std::vector<Vertex_id>& failed, Kernel_statistics& stats, Policy& policy)
   {
+    if(attempt == 0) choose_first_cut(points, partitions, rotated);
     const Attempt_curve keys(lo_, hi_, transform_for(attempt, partitions, 3 * Attempt_curve::bits));
     Attempt_cut plan = rotated ? cut_rotated(m_, points, partitions, keys)
                                : cut_by_sorting(m_, points, partitions, keys);
@@ -555,7 +619,6 @@ private:
     resize_cell_arrays(fresh_begin[partitions]);
     policy.prepare(partitions, fresh_begin[partitions]);
 
-    std::vector<Tet_id> hints = owned_start_tets(partitions, fresh_begin[0]);
     std::vector<std::vector<Tet_id>> free_lists(partitions);
     for(std::size_t k = 0; k < m_.free_tets.size(); ++k)
       free_lists[k % partitions].push_back(m_.free_tets[k]);
@@ -568,22 +631,51 @@ private:
       progress_(before + (share == 0 ? 0 : done * points.size() / share));
     };
 
+    // Each partition starts under the strict rule; one whose last window of
+    // points failed by more than a quarter goes on under the paper's (see
+    // strict_rule_window).  Either kernel writes only what the paper's rule
+    // gives its partition, so partitions under different rules never touch
+    // the same data.
+    const std::vector<Tet_id> hints =
+        owned_start_tets<Partition_ownership>(partitions, fresh_begin[0]);
+    std::vector<Tet_id> papers_hints;
+    constexpr bool may_share = Policy::shares_neighbors_allowed;
+    if(may_share && std::count(hints.begin(), hints.end(), no_tet) > 0)
+      papers_hints = owned_start_tets<Partition_ownership_three_of_four>(partitions, fresh_begin[0]);
+    std::vector<char> on_papers_rule(partitions, 0);
     for_each_chunk(partitions, [&](int j) {
       Insertion_scratch& scratch = scratches[j];
       scratch.timed = timed_;
       Partition_ownership ownership;
       ownership.partition_of_vertex = partition_of_vertex_.data();
       ownership.partition = static_cast<std::uint8_t>(j);
+      const std::function<void(std::size_t)>* progress = j == 0 && progress_ ? &report : nullptr;
+      const Vertex_id *begin = sorted.data() + cut[j], *end = sorted.data() + cut[j + 1];
       with_vector_paths([&](auto paths) {
-        typename Policy::template Kernel<Partition_ownership, Partition_slots, decltype(paths)> kernel(
+        typedef decltype(paths) Paths;
+        typename Policy::template Kernel<Partition_ownership, Partition_slots, Paths> kernel(
             m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1], &m_.tets}, filter_,
             sub_filter_, ownership);
         Tet_id hint = hints[j];
-        insert_run(policy, kernel, j, sorted.data() + cut[j], sorted.data() + cut[j + 1], first_new, duplicate_of,
-                   hint, failures[j], j == 0 && progress_ ? &report : nullptr);
+        const Vertex_id* stop = insert_run(policy, kernel, j, begin, end, first_new, duplicate_of, hint, failures[j],
+                                           progress, may_share ? strict_rule_window : 0);
         next_fresh[j] = kernel.slots().next_fresh;
+        if constexpr(may_share) {
+          if(stop == end) return;
+          on_papers_rule[j] = 1;
+          Partition_ownership_three_of_four papers;
+          papers.partition_of_vertex = partition_of_vertex_.data();
+          papers.partition = static_cast<std::uint8_t>(j);
+          typename Policy::template Kernel<Partition_ownership_three_of_four, Partition_slots, Paths> papers_kernel(
+              m_, scratch, kernel.slots(), filter_, sub_filter_, papers);
+          if(hint == no_tet) hint = papers_hints[j];
+          insert_run(policy, papers_kernel, j, stop, end, first_new, duplicate_of, hint, failures[j], progress, 0,
+                     std::size_t(stop - begin));
+          next_fresh[j] = papers_kernel.slots().next_fresh;
+        }
       });
     });
+    papers_rule_partitions_ = int(std::count(on_papers_rule.begin(), on_papers_rule.end(), 1));
 
     // Unused fresh slots and the partitions' free lists go back to the mesh.
     for(int j = 0; j < partitions; ++j) {
@@ -620,28 +712,39 @@ private:
   // another task is rewriting.  Only the slots below `end` hold cells: the
   // fresh ranges above are unwritten (a partition that owns nothing made the
   // scan run into them and read garbage vertex ids).
+  template <class Ownership>
   std::vector<Tet_id> owned_start_tets(int partitions, Tet_id end) const
   {
     std::vector<Tet_id> hints(partitions, no_tet);
     int missing = partitions;
-    Partition_ownership ownership;
+    Ownership ownership;
     ownership.partition_of_vertex = partition_of_vertex_.data();
-    for(Tet_id t = 0; t < end && missing > 0; ++t) {
-      if(!m_.is_live(t)) continue;
-      const std::uint8_t j = partition_of_vertex_[m_.vertex(t, 0)];
-      if(hints[j] != no_tet) continue;
+    auto consider = [&](Tet_id t, std::uint8_t j) {
+      if(hints[j] != no_tet) return;
       ownership.partition = j;
       if(ownership.owns(m_, t)) {
         hints[j] = t;
         --missing;
       }
+    };
+    for(Tet_id t = 0; t < end && missing > 0; ++t) {
+      if(!m_.is_live(t)) continue;
+      const std::uint8_t j0 = partition_of_vertex_[m_.vertex(t, 0)];
+      consider(t, j0);
+      // A tetrahedron owned under Partition_ownership_three_of_four has
+      // vertex 0 or vertex 1 in the partition.
+      const std::uint8_t j1 = partition_of_vertex_[m_.vertex(t, 1)];
+      if(Ownership::shares_neighbors && j1 != j0) consider(t, j1);
     }
     return hints;
   }
 
+
   Flat_storage& m_;
   Static_filter filter_;
   Sub_determinant_filter sub_filter_;
+  int papers_rule_partitions_ = 0; // in the last attempt
+  bool quarter_cut_first_ = false;
   double lo_[3], hi_[3];
   std::uint64_t seed_;
   bool timed_;

@@ -19,8 +19,9 @@
 // with its own per-point step, Constrained_point_insertion: the kernel's
 // WALK (one that gives up, the mesh not being Delaunay), the constrained
 // star-shaped cavity, then the kernel's DELAUNAYBALL (fill_hole).  A
-// partition owns the tetrahedra whose vertices are all in it (the engine's
-// rule, stricter than the paper's three of four: see Partition_ownership);
+// partition owns the tetrahedra whose vertices are all in it (stricter than
+// the paper's three of four, which Delaunay insertion uses: the constrained
+// cavity also writes the subdomain and constraint entries of its neighbours);
 // a point whose walk leaves them, or whose cavity reaches another one, is
 // tried again with new partitions, and the last ones sequentially
 // (§3.3-§3.4).  Points dropped by the rules above are dropped whatever the
@@ -112,6 +113,7 @@ inline bool circumcentre(const double* a, const double* b, const double* c, cons
 class Constrained_point_insertion
 {
 public:
+  static constexpr bool shares_neighbors_allowed = false;
   template <class Ownership, class Slots, class Paths = Default_paths>
   using Kernel = Delaunay_kernel<Ownership, Slots, Walk_giving_up, Paths>;
 
