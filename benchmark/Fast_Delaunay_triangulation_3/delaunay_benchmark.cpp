@@ -139,16 +139,22 @@ double seconds_since(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Times only the insertion; counting the cells and destroying the triangulation stay outside the clock.
-template <class Triangulation, class Point_range>
-Engine_result insert_and_count(Triangulation& triangulation, const Point_range& points)
+// Times `operation` alone; counting the cells and destroying the triangulation stay outside the clock.
+template <class Triangulation, class Operation>
+Engine_result time_and_count(Triangulation& triangulation, Operation&& operation)
 {
   Engine_result result;
   const Clock::time_point start = Clock::now();
-  triangulation.insert(points.begin(), points.end());
+  operation();
   result.seconds = seconds_since(start);
   result.finite_cells = triangulation.number_of_finite_cells();
   return result;
+}
+
+template <class Triangulation, class Point_range>
+Engine_result insert_and_count(Triangulation& triangulation, const Point_range& points)
+{
+  return time_and_count(triangulation, [&] { triangulation.insert(points.begin(), points.end()); });
 }
 
 Engine_result run_fast(const Points& points, int /*threads*/)
@@ -195,12 +201,9 @@ Engine_result remove_tenth(const Points& points)
 {
   Triangulation triangulation(points.begin(), points.end());
   const auto vertices = every_tenth_vertex(triangulation, points);
-  Engine_result result;
-  const Clock::time_point start = Clock::now();
-  for(const auto& v : vertices) triangulation.remove(v);
-  result.seconds = seconds_since(start);
-  result.finite_cells = triangulation.number_of_finite_cells();
-  return result;
+  return time_and_count(triangulation, [&] {
+    for(const auto& v : vertices) triangulation.remove(v);
+  });
 }
 
 // Times the move of every tenth vertex by a random displacement of at most a tenth of the mean spacing per axis
@@ -220,12 +223,9 @@ Engine_result move_tenth(const Points& points)
     const Point p = v->point();
     targets.emplace_back(p.x() + d(rng), p.y() + d(rng), p.z() + d(rng));
   }
-  Engine_result result;
-  const Clock::time_point start = Clock::now();
-  for(std::size_t k = 0; k < vertices.size(); ++k) triangulation.move(vertices[k], targets[k]);
-  result.seconds = seconds_since(start);
-  result.finite_cells = triangulation.number_of_finite_cells();
-  return result;
+  return time_and_count(triangulation, [&] {
+    for(std::size_t k = 0; k < vertices.size(); ++k) triangulation.move(vertices[k], targets[k]);
+  });
 }
 
 // Times insert(p) called once per point in input order (random in space), as code that receives points one at a
@@ -234,16 +234,13 @@ template <class Triangulation>
 Engine_result insert_one_by_one(const Points& points, bool with_hint)
 {
   Triangulation triangulation;
-  Engine_result result;
-  const Clock::time_point start = Clock::now();
-  typename Triangulation::Vertex_handle v;
-  if(with_hint)
-    for(const Point& p : points) v = triangulation.insert(p, v);
-  else
-    for(const Point& p : points) triangulation.insert(p);
-  result.seconds = seconds_since(start);
-  result.finite_cells = triangulation.number_of_finite_cells();
-  return result;
+  return time_and_count(triangulation, [&] {
+    typename Triangulation::Vertex_handle v;
+    if(with_hint)
+      for(const Point& p : points) v = triangulation.insert(p, v);
+    else
+      for(const Point& p : points) triangulation.insert(p);
+  });
 }
 
 Engine_result run_fast_loop(const Points& points, int /*threads*/) { return insert_one_by_one<Fast_dt>(points, false); }
@@ -321,12 +318,7 @@ template <class Triangulation>
 Engine_result remove_tenth_as_range(Triangulation& triangulation, const Points& points)
 {
   const auto vertices = every_tenth_vertex(triangulation, points);
-  Engine_result result;
-  const Clock::time_point start = Clock::now();
-  triangulation.remove(vertices.begin(), vertices.end());
-  result.seconds = seconds_since(start);
-  result.finite_cells = triangulation.number_of_finite_cells();
-  return result;
+  return time_and_count(triangulation, [&] { triangulation.remove(vertices.begin(), vertices.end()); });
 }
 Engine_result run_cgal_parallel_remove(const Points& points, int threads)
 {

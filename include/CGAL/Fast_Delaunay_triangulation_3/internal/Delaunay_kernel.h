@@ -169,7 +169,6 @@ struct Sequential_ownership
   static constexpr bool shares_neighbors = false;
   bool owns(const Flat_storage&, Tet_id) const { return true; }
   bool owns_across(const Vertex_id*, int) const { return true; }
-  bool owns_vertex(Vertex_id) const { return true; }
 };
 
 // In a partitioned insertion, a tetrahedron belongs to a thread when all its
@@ -203,7 +202,6 @@ struct Partition_ownership
     const Vertex_id w = tv[i] == ghost_vertex ? tv[0] : tv[i];
     return partition_of_vertex[w] == partition;
   }
-  bool owns_vertex(Vertex_id v) const { return partition_of_vertex[v] == partition; }
 };
 
 // The paper's rule, for Delaunay insertion: a tetrahedron belongs to a thread
