@@ -729,11 +729,12 @@ TEST(CgalUserPrograms, InfoOverUserBase)
 }
 
 // Without a user base the vertices stay facades over the flat arrays.
-static_assert(std::is_same<Fast_dt::Vertex, CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<Fast_dt>>::value,
-              "default vertices are facades");
-static_assert(std::is_same<CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>::Vertex,
-                           CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<
-                               CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>>>::value,
+template <class Vertex>
+struct Is_vertex_facade : std::false_type {};
+template <class Tr>
+struct Is_vertex_facade<CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<Tr>> : std::true_type {};
+static_assert(Is_vertex_facade<Fast_dt::Vertex>::value, "default vertices are facades");
+static_assert(Is_vertex_facade<CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>::Vertex>::value,
               "vertices with an info only are facades");
 
 TEST(CgalUserPrograms, UserCellBase)
