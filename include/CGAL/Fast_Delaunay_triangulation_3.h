@@ -111,7 +111,6 @@ public:
 protected:
   using Tr_base::anchor_;
   using Tr_base::below_dimension_3;
-  using Tr_base::edge_vertex;
   using Tr_base::engine_coordinates;
   using Tr_base::exact_coordinates;
   using Tr_base::from_reference;

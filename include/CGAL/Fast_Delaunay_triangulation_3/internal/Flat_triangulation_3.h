@@ -13,6 +13,7 @@
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_FLAT_TRIANGULATION_3_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Face_iterators.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_points.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_queries.h>
@@ -230,130 +231,12 @@ public:
   typedef Vertex_handle All_vertices_iterator;
   typedef Vertex_handle Vertex_iterator;
 
-  // Facets and edges are enumerated once each, from the cell of smallest
-  // index among those that share them.  Both are bidirectional, as CGAL's:
-  // a code is listed when accepts(code), in either direction.
-  template <bool finite_only>
-  class Facet_iterator_t
-  {
-  public:
-    typedef std::bidirectional_iterator_tag iterator_category;
-    typedef Facet value_type;
-    typedef std::ptrdiff_t difference_type;
-    typedef const Facet* pointer;
-    typedef const Facet& reference;
-
-    Facet_iterator_t() = default;
-    Facet_iterator_t(const Anchor* tr, std::size_t code) : tr_(tr), code_(code) { skip(); }
-    const Facet& operator*() const { return facet_; }
-    const Facet* operator->() const { return &facet_; }
-    Facet_iterator_t& operator++() { ++code_; skip(); return *this; }
-    Facet_iterator_t operator++(int) { Facet_iterator_t old = *this; ++*this; return old; }
-    Facet_iterator_t& operator--()
-    {
-      do {
-        CGAL_precondition(code_ > 0);
-        --code_;
-      } while(!accepts(code_));
-      facet_ = Facet(Cell_handle(tr_, code_ >> 2), static_cast<int>(code_ & 3));
-      return *this;
-    }
-    Facet_iterator_t operator--(int) { Facet_iterator_t old = *this; --*this; return old; }
-    friend bool operator==(const Facet_iterator_t& a, const Facet_iterator_t& b) { return a.code_ == b.code_; }
-    friend bool operator!=(const Facet_iterator_t& a, const Facet_iterator_t& b) { return a.code_ != b.code_; }
-
-  private:
-    // In dimension 2 the facets are the triangles, as (c, 3).
-    bool accepts(std::size_t code) const
-    {
-      const Flat_storage& m = tr_->core.mesh;
-      const Tet_id t = static_cast<Tet_id>(code >> 2);
-      const int i = static_cast<int>(code & 3);
-      if(!m.is_live(t)) return false;
-      if(tr_->dimension() == 2) return i == 3 && !(finite_only && tr_->has_infinite_vertex(t));
-      if(m.neighbor(t, i) < t) return false;
-      return !(finite_only && m.is_ghost(t) && i != 3);
-    }
-    void skip()
-    {
-      const std::size_t end = 4 * tr_->slots_of_faces(2);
-      while(code_ < end && !accepts(code_)) ++code_;
-      if(code_ < end) facet_ = Facet(Cell_handle(tr_, code_ >> 2), static_cast<int>(code_ & 3));
-    }
-    const Anchor* tr_ = nullptr;
-    std::size_t code_ = 0;
-    Facet facet_;
-  };
-  typedef Facet_iterator_t<false> All_facets_iterator;
-  typedef Facet_iterator_t<true> Finite_facets_iterator;
+  // Facets and edges once each (Face_iterators.h); bidirectional, as CGAL's.
+  typedef Fast_Delaunay_triangulation_3_internal::Facet_iterator<Anchor, Facet, false> All_facets_iterator;
+  typedef Fast_Delaunay_triangulation_3_internal::Facet_iterator<Anchor, Facet, true> Finite_facets_iterator;
   typedef All_facets_iterator Facet_iterator;
-
-  template <bool finite_only>
-  class Edge_iterator_t
-  {
-  public:
-    typedef std::bidirectional_iterator_tag iterator_category;
-    typedef Edge value_type;
-    typedef std::ptrdiff_t difference_type;
-    typedef const Edge* pointer;
-    typedef const Edge& reference;
-
-    Edge_iterator_t() = default;
-    Edge_iterator_t(const Anchor* tr, std::size_t code) : tr_(tr), code_(code) { skip(); }
-    const Edge& operator*() const { return edge_; }
-    const Edge* operator->() const { return &edge_; }
-    Edge_iterator_t& operator++() { ++code_; skip(); return *this; }
-    Edge_iterator_t operator++(int) { Edge_iterator_t old = *this; ++*this; return old; }
-    Edge_iterator_t& operator--()
-    {
-      do {
-        CGAL_precondition(code_ > 0);
-        --code_;
-        // A free slot: none of its six codes is listed.
-        if(!tr_->core.mesh.is_live(static_cast<Tet_id>(code_ / 6))) code_ -= code_ % 6;
-      } while(!accepts(code_));
-      set_edge();
-      return *this;
-    }
-    Edge_iterator_t operator--(int) { Edge_iterator_t old = *this; --*this; return old; }
-    friend bool operator==(const Edge_iterator_t& a, const Edge_iterator_t& b) { return a.code_ == b.code_; }
-    friend bool operator!=(const Edge_iterator_t& a, const Edge_iterator_t& b) { return a.code_ != b.code_; }
-
-  private:
-    // In dimension 1 the edges are the segments (c, 0, 1); in dimension 2
-    // each triangle reports the edges whose other triangle has a larger index.
-    bool accepts(std::size_t code) const
-    {
-      const Flat_storage& m = tr_->core.mesh;
-      const int dimension = tr_->dimension();
-      const Tet_id t = static_cast<Tet_id>(code / 6);
-      if(!m.is_live(t)) return false;
-      const int i = edge_vertex[code % 6][0], j = edge_vertex[code % 6][1];
-      if(j > dimension) return false;
-      if(finite_only && (m.vertex(t, i) == Fast_Delaunay_triangulation_3_internal::ghost_vertex ||
-                         m.vertex(t, j) == Fast_Delaunay_triangulation_3_internal::ghost_vertex))
-        return false;
-      if(dimension == 1) return true;
-      if(dimension == 2) return m.neighbor(t, 3 - i - j) > t;
-      return dimension == 3 && tr_->smallest_cell_around_edge(t, i, j) == t;
-    }
-    void skip()
-    {
-      const std::size_t end = 6 * tr_->slots_of_faces(1);
-      for(; code_ < end; ++code_) {
-        // A free slot: none of its six codes is listed.
-        if(!tr_->core.mesh.is_live(static_cast<Tet_id>(code_ / 6))) { code_ += 5 - code_ % 6; continue; }
-        if(accepts(code_)) break;
-      }
-      if(code_ < end) set_edge();
-    }
-    void set_edge() { edge_ = Edge(Cell_handle(tr_, code_ / 6), edge_vertex[code_ % 6][0], edge_vertex[code_ % 6][1]); }
-    const Anchor* tr_ = nullptr;
-    std::size_t code_ = 0;
-    Edge edge_;
-  };
-  typedef Edge_iterator_t<false> All_edges_iterator;
-  typedef Edge_iterator_t<true> Finite_edges_iterator;
+  typedef Fast_Delaunay_triangulation_3_internal::Edge_iterator<Anchor, Edge, false> All_edges_iterator;
+  typedef Fast_Delaunay_triangulation_3_internal::Edge_iterator<Anchor, Edge, true> Finite_edges_iterator;
   typedef All_edges_iterator Edge_iterator;
 
   typedef Fast_Delaunay_triangulation_3_internal::Handle_iterator<All_cells_iterator, Cell_handle> All_cell_handles_iterator;
@@ -1198,8 +1081,6 @@ protected:
   {
     return Fast_Delaunay_triangulation_3_internal::Kernel_queries<Anchor>(*anchor_);
   }
-
-  static constexpr int edge_vertex[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
   // Never null: a moved-from triangulation gets a new, empty anchor.
   std::unique_ptr<Anchor> anchor_;
