@@ -66,11 +66,7 @@ class Fast_Delaunay_triangulation_3
   using typename Tr_base::Anchor;
   using typename Tr_base::Core;
   using typename Tr_base::Flat_storage;
-  using typename Tr_base::Lower;
-  using typename Tr_base::Reference_cell;
-  using typename Tr_base::Reference_edge;
-  using typename Tr_base::Reference_facet;
-  using typename Tr_base::Reference_vertex;
+  typedef Fast_Delaunay_triangulation_3_internal::Lower_dimensional_triangulation Lower;
   using typename Tr_base::Tet_id;
   using typename Tr_base::Vertex_id;
 
@@ -110,16 +106,13 @@ public:
 
 protected:
   using Tr_base::anchor_;
-  using Tr_base::below_dimension_3;
+  using Tr_base::below_3;
   using Tr_base::engine_coordinates;
   using Tr_base::exact_coordinates;
-  using Tr_base::from_reference;
   using Tr_base::kernel_queries;
   using Tr_base::keeps_kernel_points;
-  using Tr_base::lower;
   using Tr_base::threads_;
   using Tr_base::throw_not_doubles;
-  using Tr_base::to_reference;
   using Tr_base::vertex_count;
 
 public:
@@ -543,16 +536,7 @@ public:
   {
     CGAL_precondition(dimension() >= 2);
     if(could_lock_zone) *could_lock_zone = true;
-    if(dimension() == 2) {
-      std::vector<Reference_facet> boundary, internal;
-      std::vector<Reference_cell> cells;
-      lower().delaunay().find_conflicts(to_reference(p), to_reference(c), std::back_inserter(boundary),
-                                        std::back_inserter(cells), std::back_inserter(internal));
-      for(const Reference_facet& f : boundary) *bfit++ = from_reference(f);
-      for(Reference_cell x : cells) *cit++ = from_reference(x);
-      for(const Reference_facet& f : internal) *ifit++ = from_reference(f);
-      return make_triple(bfit, cit, ifit);
-    }
+    if(dimension() == 2) return below_3().find_conflicts(p, c, bfit, cit, ifit);
     double q[3];
     const bool with_internal = !std::is_same<OutputIteratorInternalFacets, Emptyset_iterator>::value;
     Fast_Delaunay_triangulation_3_internal::Conflict_zone zone;
@@ -583,13 +567,7 @@ public:
   template <class OutputIterator>
   OutputIterator vertices_on_conflict_zone_boundary(const Point& p, Cell_handle c, OutputIterator res) const
   {
-    if(dimension() == 2) {
-      std::vector<Reference_vertex> vertices;
-      lower().delaunay().vertices_on_conflict_zone_boundary(to_reference(p), to_reference(c),
-                                                            std::back_inserter(vertices));
-      for(Reference_vertex v : vertices) *res++ = from_reference(v);
-      return res;
-    }
+    if(dimension() == 2) return below_3().vertices_on_conflict_zone_boundary(p, c, res);
     std::vector<Facet> facets;
     find_conflicts(p, c, std::back_inserter(facets), Emptyset_iterator());
     std::vector<Vertex_handle> vertices;
@@ -725,7 +703,7 @@ public:
   Bounded_side side_of_circle(Cell_handle c, int i, const Point& p, bool perturb = false) const
   {
     CGAL_precondition(dimension() >= 2 && i >= 0 && i < 4);
-    if(dimension() == 2) return lower().delaunay().side_of_circle(to_reference(c), i, to_reference(p), perturb);
+    if(dimension() == 2) return below_3().side_of_circle(c, i, p, perturb);
     if(!is_infinite(c) || i == 3) {
       const int i0 = i > 0 ? 0 : 1, i1 = i > 1 ? 1 : 2, i2 = i > 2 ? 2 : 3;
       const Point &a = point(c, i0), &b = point(c, i1), &d = point(c, i2);
@@ -969,7 +947,7 @@ private:
     typename Lower::Location where;
     if(lt) {
       where.type = static_cast<typename Lower::Locate_type>(*lt);
-      where.cell = to_reference(c);
+      where.cell = below_3().reference(c);
       where.li = li;
       where.lj = lj;
     }

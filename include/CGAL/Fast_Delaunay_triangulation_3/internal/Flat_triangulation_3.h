@@ -17,6 +17,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Handles.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_points.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Kernel_queries.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimension_view.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Point_location.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Segment_traverser.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Simplex.h>
@@ -98,11 +99,6 @@ protected:
   typedef Fast_Delaunay_triangulation_3_internal::Flat_storage Flat_storage;
   typedef Fast_Delaunay_triangulation_3_internal::Vertex_id Vertex_id;
   typedef Fast_Delaunay_triangulation_3_internal::Tet_id Tet_id;
-  typedef Fast_Delaunay_triangulation_3_internal::Lower_dimensional_triangulation Lower;
-  typedef typename Lower::Reference_cell Reference_cell;
-  typedef typename Lower::Reference_vertex Reference_vertex;
-  typedef typename Lower::Delaunay::Facet Reference_facet;
-  typedef typename Lower::Delaunay::Edge Reference_edge;
 
 public:
   typedef Gt Geom_traits;
@@ -348,8 +344,7 @@ public:
                                                       Cell_handle hint = Cell_handle()) const
   {
     if(dimension() == 2)
-      return Segment_cell_iterator(planar_segment_cells(
-          lower().delaunay().segment_traverser_cells_begin(to_reference(p), to_reference(q), to_reference(hint))));
+      return Segment_cell_iterator(below_3().segment_cells(p, q, hint));
     return Segment_cell_iterator(segment_walk(p, q, hint).cells);
   }
   Segment_cell_iterator segment_traverser_cells_begin(Vertex_handle vs, Vertex_handle vt) const
@@ -521,12 +516,7 @@ public:
       if(loc.lj >= 0) lj = loc.lj;
       return loc.cell == Tet_id(-1) ? Cell_handle() : Cell_handle(anchor_.get(), loc.cell);
     }
-    if(dimension() < 3) {
-      typename Lower::Locate_type type;
-      const Reference_cell c = lower().delaunay().locate(to_reference(p), type, li, lj, to_reference(start));
-      lt = static_cast<Locate_type>(type);
-      return from_reference(c);
-    }
+    if(dimension() < 3) return below_3().locate(p, lt, li, lj, start);
     const Tet_id from = start ? start.index() : Tet_id(-1);
     const Fast_Delaunay_triangulation_3_internal::Location loc =
         exact_coordinates(p, q) ? Fast_Delaunay_triangulation_3_internal::locate(anchor_->core.mesh, from, q)
@@ -587,10 +577,7 @@ public:
   Bounded_side side_of_facet(const Point& p, Cell_handle c, Locate_type& lt, int& li, int& lj) const
   {
     CGAL_precondition(dimension() == 2);
-    typename Lower::Locate_type type = unset_locate_type();
-    const Bounded_side side = lower().delaunay().side_of_facet(to_reference(p), to_reference(c), type, li, lj);
-    if(type != unset_locate_type()) lt = static_cast<Locate_type>(type);
-    return side;
+    return below_3().side_of_facet(p, c, lt, li, lj);
   }
   Bounded_side side_of_facet(const Point& p, const Facet& f, Locate_type& lt, int& li, int& lj) const
   {
@@ -601,10 +588,7 @@ public:
   Bounded_side side_of_edge(const Point& p, Cell_handle c, Locate_type& lt, int& li) const
   {
     CGAL_precondition(dimension() == 1);
-    typename Lower::Locate_type type = unset_locate_type();
-    const Bounded_side side = lower().delaunay().side_of_edge(to_reference(p), to_reference(c), type, li);
-    if(type != unset_locate_type()) lt = static_cast<Locate_type>(type);
-    return side;
+    return below_3().side_of_edge(p, c, lt, li);
   }
   Bounded_side side_of_edge(const Point& p, const Edge& e, Locate_type& lt, int& li) const
   {
@@ -630,17 +614,10 @@ public:
     return dimension() == 3 && c.owner() == anchor_.get() && c.index() < anchor_->core.mesh.number_of_slots() &&
            anchor_->core.mesh.is_live(c.index());
   }
-  // Below dimension 3 CGAL's triangulation answers (CGAL 5.5 looks among
-  // the cells around u, and finds none below dimension 2: is_edge() is
-  // false in dimension 1).
+  // Below dimension 3 CGAL's triangulation answers (Lower_dimension_view.h).
   bool is_edge(Vertex_handle u, Vertex_handle v, Cell_handle& c, int& i, int& j) const
   {
-    if(dimension() < 3) {
-      typename Lower::Reference_cell rc;
-      if(!lower().delaunay().is_edge(to_reference(u), to_reference(v), rc, i, j)) return false;
-      c = from_reference(rc);
-      return true;
-    }
+    if(dimension() < 3) return below_3().is_edge(u, v, c, i, j);
     int index[2];
     const Vertex_handle others[1] = {v};
     if(u == v || !Fast_Delaunay_triangulation_3_internal::find_cell_with(*this, u, others, c, index)) return false;
@@ -649,12 +626,7 @@ public:
   }
   bool is_facet(Vertex_handle u, Vertex_handle v, Vertex_handle w, Cell_handle& c, int& i, int& j, int& k) const
   {
-    if(dimension() < 3) {
-      typename Lower::Reference_cell rc;
-      if(!lower().delaunay().is_facet(to_reference(u), to_reference(v), to_reference(w), rc, i, j, k)) return false;
-      c = from_reference(rc);
-      return true;
-    }
+    if(dimension() < 3) return below_3().is_facet(u, v, w, c, i, j, k);
     int index[3];
     const Vertex_handle others[2] = {v, w};
     if(u == v || u == w || v == w ||
@@ -710,55 +682,54 @@ public:
   }
 
   // ---------------------------------------------------------------- adjacency
-  // Below dimension 3, CGAL's triangulation answers, in its order (CGAL
-  // defines incident cells and facets from dimension 2, edges from
-  // dimension 1; below that they are empty).
+  // Below dimension 3, CGAL's triangulation answers, in its order
+  // (Lower_dimension_view.h).
   template <class OutputIterator>
   OutputIterator incident_cells(Vertex_handle v, OutputIterator out) const
   {
-    if(dimension() < 3) return below_dimension_3<Reference_cell>(out, [&](auto to) { lower().delaunay().incident_cells(to_reference(v), to); });
+    if(dimension() < 3) return below_3().incident_cells(v, out, false);
     return cells_around(v, out, false);
   }
   template <class OutputIterator>
   OutputIterator finite_incident_cells(Vertex_handle v, OutputIterator out) const
   {
-    if(dimension() < 3) return below_dimension_3<Reference_cell>(out, [&](auto to) { lower().delaunay().finite_incident_cells(to_reference(v), to); });
+    if(dimension() < 3) return below_3().incident_cells(v, out, true);
     return cells_around(v, out, true);
   }
   template <class OutputIterator>
   OutputIterator incident_facets(Vertex_handle v, OutputIterator out) const
   {
-    if(dimension() < 3) return below_dimension_3<Reference_facet>(out, [&](auto to) { lower().delaunay().incident_facets(to_reference(v), to); });
+    if(dimension() < 3) return below_3().incident_facets(v, out, false);
     return facets_around(v, out, false);
   }
   template <class OutputIterator>
   OutputIterator finite_incident_facets(Vertex_handle v, OutputIterator out) const
   {
-    if(dimension() < 3) return below_dimension_3<Reference_facet>(out, [&](auto to) { lower().delaunay().finite_incident_facets(to_reference(v), to); });
+    if(dimension() < 3) return below_3().incident_facets(v, out, true);
     return facets_around(v, out, true);
   }
   template <class OutputIterator>
   OutputIterator incident_edges(Vertex_handle v, OutputIterator out) const
   {
-    if(dimension() < 3) return below_dimension_3<Reference_edge>(out, [&](auto to) { lower().delaunay().incident_edges(to_reference(v), to); });
+    if(dimension() < 3) return below_3().incident_edges(v, out, false);
     return edges_around(v, out, false);
   }
   template <class OutputIterator>
   OutputIterator finite_incident_edges(Vertex_handle v, OutputIterator out) const
   {
-    if(dimension() < 3) return below_dimension_3<Reference_edge>(out, [&](auto to) { lower().delaunay().finite_incident_edges(to_reference(v), to); });
+    if(dimension() < 3) return below_3().incident_edges(v, out, true);
     return edges_around(v, out, true);
   }
   template <class OutputIterator>
   OutputIterator adjacent_vertices(Vertex_handle v, OutputIterator out) const
   {
-    if(dimension() < 3) return below_dimension_3<Reference_vertex>(out, [&](auto to) { lower().delaunay().adjacent_vertices(to_reference(v), to); });
+    if(dimension() < 3) return below_3().adjacent_vertices(v, out, false);
     return vertices_around(v, out, false);
   }
   template <class OutputIterator>
   OutputIterator finite_adjacent_vertices(Vertex_handle v, OutputIterator out) const
   {
-    if(dimension() < 3) return below_dimension_3<Reference_vertex>(out, [&](auto to) { lower().delaunay().finite_adjacent_vertices(to_reference(v), to); });
+    if(dimension() < 3) return below_3().adjacent_vertices(v, out, true);
     return vertices_around(v, out, true);
   }
   template <class OutputIterator>
@@ -771,7 +742,7 @@ public:
   // Adjacent vertices, the infinite one included (CGAL's count).
   size_type degree(Vertex_handle v) const
   {
-    if(dimension() < 3) return lower().delaunay().degree(to_reference(v));
+    if(dimension() < 3) return below_3().degree(v);
     std::size_t n = 0;
     vertices_around(v, Fast_Delaunay_triangulation_3_internal::Counting_output{&n}, false);
     return n;
@@ -901,44 +872,12 @@ public:
   std::size_t slots_of_faces(int face_dimension) const { return anchor_->slots_of_faces(face_dimension); }
 
 protected:
-  // Handles of CGAL's triangulation below dimension 3 (Lower_dimensions.h)
-  // and ours, both ways; every CGAL cell has its slot, the one cell of the
-  // empty triangulation included.
-  const Lower& lower() const { return anchor_->core.lower; }
-  // CGAL's side_of_facet / side_of_edge leave lt alone outside the simplex:
-  // a value no enumerator has (but in the enum's range, 0..7) tells, so
-  // that ours leave the caller's lt alone too.
-  static typename Lower::Locate_type unset_locate_type() { return static_cast<typename Lower::Locate_type>(7); }
-  Cell_handle from_reference(Reference_cell c) const { return anchor_->cell_of_reference(c); }
-  Vertex_handle from_reference(Reference_vertex v) const
+  // Every answer below dimension 3 (Lower_dimension_view.h).
+  Fast_Delaunay_triangulation_3_internal::Lower_dimension_view<Self> below_3() const
   {
-    return v == Reference_vertex() ? Vertex_handle() : Vertex_handle(anchor_.get(), Lower::id(v));
+    return Fast_Delaunay_triangulation_3_internal::Lower_dimension_view<Self>(anchor_.get());
   }
-  Facet from_reference(const Reference_facet& f) const { return Facet(from_reference(f.first), f.second); }
-  Edge from_reference(const Reference_edge& e) const { return Edge(from_reference(e.first), e.second, e.third); }
-  Reference_cell to_reference(Cell_handle c) const { return c ? lower().cell(c.index()) : Reference_cell(); }
-  Reference_vertex to_reference(Vertex_handle v) const
-  {
-    return v == Vertex_handle() ? Reference_vertex() : lower().vertex(v.index());
-  }
-  // Below dimension 3 CGAL's triangulation of the vertices' doubles
-  // answers, so a query point must have double coordinates too.
-  static typename Lower::Reference_point to_reference(const Point& p)
-  {
-    double xyz[3];
-    engine_coordinates(p, xyz);
-    return typename Lower::Reference_point(xyz[0], xyz[1], xyz[2]);
-  }
-  // Runs `query` with an output iterator of CGAL's elements of type
-  // Reference, and writes them to `out` as our handles, in CGAL's order.
-  template <class Reference, class OutputIterator, class Query>
-  OutputIterator below_dimension_3(OutputIterator out, const Query& query) const
-  {
-    std::vector<Reference> found;
-    query(std::back_inserter(found));
-    for(const Reference& x : found) *out++ = from_reference(x);
-    return out;
-  }
+  friend class Fast_Delaunay_triangulation_3_internal::Lower_dimension_view<Self>;
 
   typedef Fast_Delaunay_triangulation_3_internal::Segment_walk<Self> Segment_walk;
   typedef Fast_Delaunay_triangulation_3_internal::Segment_walk_result<Self> Segment_walk_result;
@@ -961,12 +900,6 @@ protected:
     CGAL_precondition(dimension() == 3 && vs != vt && !is_infinite(vs) && !is_infinite(vt));
     const Cell_handle c = vs->cell();
     return Segment_walk(this, vs->point(), vt->point()).run({c, 1u << c->index(vs)});
-  }
-  std::vector<Cell_handle> planar_segment_cells(typename Lower::Delaunay::Segment_cell_iterator it) const
-  {
-    std::vector<Cell_handle> cells;
-    for(; it != lower().delaunay().segment_traverser_cells_end(); ++it) cells.push_back(from_reference(Reference_cell(it)));
-    return cells;
   }
   std::vector<Simplex> simplices_of(const Segment_walk_result& walk) const
   {
