@@ -160,6 +160,13 @@ partitions space instead). Default: `Default`.
   incident cell per vertex (a pass over all cells); `infinite_cell()` scans
   the cells. Neither may be called concurrently from several threads.
 
+As `Delaunay_triangulation_3` derives from `Triangulation_3`, this class
+derives from `Flat_triangulation_3`, its triangulation layer (types,
+handles, iterators, access, point location, adjacency, the segment
+traverser), which is not built on its own; the members are documented here
+as the class's own. The user manual's Software Design section draws the
+layers.
+
 \sa `CGAL::Delaunay_triangulation_3`
 */
 template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
