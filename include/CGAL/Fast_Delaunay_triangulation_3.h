@@ -56,17 +56,17 @@ namespace CGAL {
 template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
           class Location_policy_ = Default, class Lock_data_structure_ = Default>
 class Fast_Delaunay_triangulation_3
-    : public Flat_triangulation_3<Gt, Tds_, Location_policy_,
-                                                                          Lock_data_structure_>
+    : public Flat_triangulation_3<Gt, Tds_, Location_policy_, Lock_data_structure_>
 {
   typedef Fast_Delaunay_triangulation_3<Gt, Tds_, Location_policy_, Lock_data_structure_> Self;
-  typedef Flat_triangulation_3<Gt, Tds_, Location_policy_,
-                                                                       Lock_data_structure_>
-      Tr_base;
+  typedef Flat_triangulation_3<Gt, Tds_, Location_policy_, Lock_data_structure_> Tr_base;
+  typedef Fast_Delaunay_triangulation_3_internal::Lower_dimensional_triangulation Lower;
+  // The names of the triangulation layer this layer uses (a dependent base's
+  // members are not found without them).  Users see all of its members
+  // through the derivation.
   using typename Tr_base::Anchor;
   using typename Tr_base::Core;
   using typename Tr_base::Flat_storage;
-  typedef Fast_Delaunay_triangulation_3_internal::Lower_dimensional_triangulation Lower;
   using typename Tr_base::Tet_id;
   using typename Tr_base::Vertex_id;
 
@@ -86,11 +86,12 @@ public:
   using typename Tr_base::size_type;
   using typename Tr_base::Vertex_handle;
   using typename Tr_base::Vertex_info;
-  using Tr_base::VERTEX;
   using Tr_base::OUTSIDE_AFFINE_HULL;
+  using Tr_base::VERTEX;
 
   using Tr_base::dimension;
   using Tr_base::geom_traits;
+  using Tr_base::incident_cell_of;
   using Tr_base::incident_cells;
   using Tr_base::infinite_vertex;
   using Tr_base::is_infinite;
@@ -98,19 +99,18 @@ public:
   using Tr_base::locate;
   using Tr_base::mirror_index;
   using Tr_base::mirror_vertex;
-  using Tr_base::incident_cell_of;
-  using Tr_base::point_of;
   using Tr_base::next_around_edge;
   using Tr_base::number_of_vertices;
   using Tr_base::point;
+  using Tr_base::point_of;
 
 protected:
   using Tr_base::anchor_;
   using Tr_base::below_3;
   using Tr_base::engine_coordinates;
   using Tr_base::exact_coordinates;
-  using Tr_base::kernel_queries;
   using Tr_base::keeps_kernel_points;
+  using Tr_base::kernel_queries;
   using Tr_base::threads_;
   using Tr_base::throw_not_doubles;
   using Tr_base::vertex_count;
