@@ -56,97 +56,104 @@ namespace CGAL {
 template <class Gt = Exact_predicates_inexact_constructions_kernel, class Tds_ = Default,
           class Location_policy_ = Default, class Lock_data_structure_ = Default>
 class Fast_Delaunay_triangulation_3
-    : public Flat_triangulation_3<Gt, Tds_, Location_policy_, Lock_data_structure_>
+    : public Fast_Delaunay_triangulation_3_layers::Flat_triangulation_3<Gt, Tds_, Location_policy_,
+                                                                        Lock_data_structure_>
 {
   typedef Fast_Delaunay_triangulation_3<Gt, Tds_, Location_policy_, Lock_data_structure_> Self;
-  typedef Flat_triangulation_3<Gt, Tds_, Location_policy_, Lock_data_structure_> Tr_base;
-  typedef Fast_Delaunay_triangulation_3_internal::Lower_dimensional_triangulation Lower;
-  // The names of the triangulation layer this layer uses (a dependent base's
-  // members are not found without them).  Users see all of its members
-  // through the derivation.
-  using typename Tr_base::Anchor;
-  using typename Tr_base::Core;
-  using typename Tr_base::Flat_storage;
-  using typename Tr_base::Tet_id;
-  using typename Tr_base::Vertex_id;
 
 public:
-  using typename Tr_base::Cell_circulator;
-  using typename Tr_base::Cell_handle;
-  using typename Tr_base::Concurrency_tag;
-  using typename Tr_base::Edge;
-  using typename Tr_base::Facet;
-  using typename Tr_base::Geom_traits;
-  using typename Tr_base::Insertion_report;
-  using typename Tr_base::Line;
-  using typename Tr_base::Locate_type;
-  using typename Tr_base::Lock_data_structure;
-  using typename Tr_base::Object;
-  using typename Tr_base::Point;
-  using typename Tr_base::size_type;
-  using typename Tr_base::Vertex_handle;
-  using typename Tr_base::Vertex_info;
-  using Tr_base::OUTSIDE_AFFINE_HULL;
-  using Tr_base::VERTEX;
+  // The triangulation layer, public as CGAL's Delaunay_triangulation_3::Tr_Base.
+  typedef Fast_Delaunay_triangulation_3_layers::Flat_triangulation_3<Gt, Tds_, Location_policy_,
+                                                                      Lock_data_structure_>
+      Tr_Base;
 
-  using Tr_base::dimension;
-  using Tr_base::geom_traits;
-  using Tr_base::incident_cell_of;
-  using Tr_base::incident_cells;
-  using Tr_base::infinite_vertex;
-  using Tr_base::is_infinite;
-  using Tr_base::is_vertex;
-  using Tr_base::locate;
-  using Tr_base::mirror_index;
-  using Tr_base::mirror_vertex;
-  using Tr_base::next_around_edge;
-  using Tr_base::number_of_vertices;
-  using Tr_base::point;
-  using Tr_base::point_of;
+private:
+  typedef Fast_Delaunay_triangulation_3_internal::Lower_dimensional_triangulation Lower;
+  // The names of the triangulation layer this layer uses: a dependent base's
+  // members are not found without them.  (Users see every public member of
+  // the base through the derivation, whether listed here or not.)
+  using typename Tr_Base::Core;
+  using typename Tr_Base::Flat_storage;
+  using typename Tr_Base::Tet_id;
+  using typename Tr_Base::Vertex_id;
 
-protected:
-  using Tr_base::anchor_;
-  using Tr_base::below_3;
-  using Tr_base::engine_coordinates;
-  using Tr_base::exact_coordinates;
-  using Tr_base::keeps_kernel_points;
-  using Tr_base::kernel_queries;
-  using Tr_base::threads_;
-  using Tr_base::throw_not_doubles;
-  using Tr_base::vertex_count;
+public:
+  using typename Tr_Base::Anchor;
+  using typename Tr_Base::Cell_circulator;
+  using typename Tr_Base::Cell_handle;
+  using typename Tr_Base::Concurrency_tag;
+  using typename Tr_Base::Edge;
+  using typename Tr_Base::Facet;
+  using typename Tr_Base::Geom_traits;
+  using typename Tr_Base::Insertion_report;
+  using typename Tr_Base::Line;
+  using typename Tr_Base::Locate_type;
+  using typename Tr_Base::Lock_data_structure;
+  using typename Tr_Base::Object;
+  using typename Tr_Base::Point;
+  using typename Tr_Base::size_type;
+  using typename Tr_Base::Vertex_handle;
+  using typename Tr_Base::Vertex_info;
+  using Tr_Base::OUTSIDE_AFFINE_HULL;
+  using Tr_Base::VERTEX;
+
+  using Tr_Base::dimension;
+  using Tr_Base::geom_traits;
+  using Tr_Base::incident_cell_of;
+  using Tr_Base::incident_cells;
+  using Tr_Base::infinite_vertex;
+  using Tr_Base::is_infinite;
+  using Tr_Base::is_vertex;
+  using Tr_Base::locate;
+  using Tr_Base::mirror_index;
+  using Tr_Base::mirror_vertex;
+  using Tr_Base::next_around_edge;
+  using Tr_Base::number_of_vertices;
+  using Tr_Base::point;
+  using Tr_Base::point_of;
+
+private:
+  using Tr_Base::anchor_;
+  using Tr_Base::below_3;
+  using Tr_Base::engine_coordinates;
+  using Tr_Base::exact_coordinates;
+  using Tr_Base::keeps_kernel_points;
+  using Tr_Base::kernel_queries;
+  using Tr_Base::threads_;
+  using Tr_Base::throw_not_doubles;
+  using Tr_Base::vertex_count;
 
 public:
   // ---------------------------------------------------------------- creation
   explicit Fast_Delaunay_triangulation_3(const Geom_traits& gt = Geom_traits(),
                                          Lock_data_structure* lock_ds = nullptr)
-      : Tr_base(gt, lock_ds)
+      : Tr_Base(gt, lock_ds)
   {}
   explicit Fast_Delaunay_triangulation_3(Lock_data_structure* lock_ds, const Geom_traits& gt = Geom_traits())
-      : Tr_base(gt, lock_ds)
+      : Tr_Base(gt, lock_ds)
   {}
   template <class InputIterator>
   Fast_Delaunay_triangulation_3(InputIterator first, InputIterator last,
                                 const Geom_traits& gt = Geom_traits(),
                                 Lock_data_structure* lock_ds = nullptr)
-      : Tr_base(gt, lock_ds)
+      : Tr_Base(gt, lock_ds)
   {
     insert(first, last);
   }
   template <class InputIterator>
   Fast_Delaunay_triangulation_3(InputIterator first, InputIterator last, Lock_data_structure* lock_ds,
                                 const Geom_traits& gt = Geom_traits())
-      : Tr_base(gt, lock_ds)
+      : Tr_Base(gt, lock_ds)
   {
     insert(first, last);
   }
-
 
   // Copies and moves as the triangulation layer makes them (see there).
   Fast_Delaunay_triangulation_3(const Self&) = default;
   Fast_Delaunay_triangulation_3(Self&&) noexcept = default;
   Self& operator=(const Self&) = default;
   Self& operator=(Self&&) noexcept = default;
-  void swap(Self& other) noexcept { Tr_base::swap(other); }
+  void swap(Self& other) noexcept { Tr_Base::swap(other); }
 
   // ---------------------------------------------------------------- options
   // Seed of the insertion order (the triangulation itself does not depend on it).
@@ -596,7 +603,7 @@ public:
   }
   Vertex_handle nearest_vertex(const Point& p, Cell_handle start = Cell_handle()) const
   {
-    return Fast_Delaunay_triangulation_3_internal::nearest_vertex(static_cast<const Tr_base&>(*this), p, start);
+    return Fast_Delaunay_triangulation_3_internal::nearest_vertex(static_cast<const Tr_Base&>(*this), p, start);
   }
   // The finite vertex of c nearest to p, among its dimension() + 1 vertices
   // (CGAL's cells below dimension 3); on a tie the lower index in c, as
@@ -945,15 +952,10 @@ private:
     anchor_->incident_cells.clear();
     anchor_->core.partitions = 1;
     typename Lower::Location where;
-    if(lt) {
-      where.type = static_cast<typename Lower::Locate_type>(*lt);
-      where.cell = below_3().reference(c);
-      where.li = li;
-      where.lj = lj;
-    }
+    if(lt) where = below_3().location(*lt, c, li, lj);
     const Vertex_id old_count = vertex_count();
     const Vertex_id v = anchor_->core.insert_one_below_dimension_3(xyz, start ? start.index() : Tet_id(-1),
-                                                           lt ? &where : nullptr, around);
+                                                                   lt ? &where : nullptr, around);
     vertices_added();
     keep_input(v, p, old_count);
     return Vertex_handle(anchor_.get(), v);
@@ -987,7 +989,6 @@ private:
   {
     return v.index() == Fast_Delaunay_triangulation_3_internal::ghost_vertex ? 0 : std::uint64_t(v.index()) + 1;
   }
-
 
   // Consumes `xyz`: the core frees it once the vertex records are written,
   // so the copy of the input does not stay resident while the mesh grows.

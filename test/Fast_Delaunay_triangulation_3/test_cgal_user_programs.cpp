@@ -728,13 +728,14 @@ TEST(CgalUserPrograms, InfoOverUserBase)
   FDT3_SAME_OUTPUT(Cgal_info_id, Fast_info_id, info_over_user_base);
 }
 
-// Without a user base the vertices stay facades over the flat arrays.
-template <class Vertex>
-struct Is_vertex_facade : std::false_type {};
-template <class Tr>
-struct Is_vertex_facade<CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<Tr>> : std::true_type {};
-static_assert(Is_vertex_facade<Fast_dt::Vertex>::value, "default vertices are facades");
-static_assert(Is_vertex_facade<CGAL::Fast_Delaunay_triangulation_3<K, Tds_color>::Vertex>::value,
+// Without a user base the vertices stay facades over the flat arrays (of
+// the triangulation layer, as CGAL names it: Tr_Base).
+static_assert(std::is_same<Fast_dt::Vertex,
+                           CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<Fast_dt::Tr_Base>>::value,
+              "default vertices are facades");
+typedef CGAL::Fast_Delaunay_triangulation_3<K, Tds_color> Fast_with_color;
+static_assert(std::is_same<Fast_with_color::Vertex,
+                           CGAL::Fast_Delaunay_triangulation_3_internal::Vertex_facade<Fast_with_color::Tr_Base>>::value,
               "vertices with an info only are facades");
 
 TEST(CgalUserPrograms, UserCellBase)

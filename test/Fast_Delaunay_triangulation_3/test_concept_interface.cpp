@@ -943,6 +943,16 @@ TYPED_TEST(Concept, TagsAreThoseOfADelaunayTriangulation)
   static_assert(std::is_void<typename TypeParam::Lock_data_structure>::value, "no locks when sequential");
 }
 
+// As CGAL's Delaunay_triangulation_3, the class derives from its
+// triangulation layer and names it Tr_Base (CGAL's Fixed_alpha_shape_3 uses
+// the name); the internal names our class had before the split stay public.
+TYPED_TEST(Concept, DerivesFromItsTriangulationLayer)
+{
+  static_assert(std::is_base_of<typename TypeParam::Tr_Base, TypeParam>::value, "derives from Tr_Base");
+}
+static_assert(std::is_class<Fast_dt::Anchor>::value && std::is_class<Fast_dt::Tds_types>::value,
+              "the storage anchor and the data structure's types are still named through the class");
+
 // The handle conversions and comparisons of CGAL's test suite
 // (_test_cls_iterator.h, _test_cls_circulator.h): iterators to handles,
 // handles against iterators, a default circulator against 0.

@@ -161,11 +161,12 @@ partitions space instead). Default: `Default`.
   the cells. Neither may be called concurrently from several threads.
 
 As `Delaunay_triangulation_3` derives from `Triangulation_3`, this class
-derives from `Flat_triangulation_3`, its triangulation layer (types,
-handles, iterators, access, point location, adjacency, the segment
-traverser), which is not built on its own; the members are documented here
-as the class's own. The user manual's Software Design section draws the
-layers.
+derives from its triangulation layer (types, handles, iterators, access,
+point location, adjacency, the segment traverser),
+`Fast_Delaunay_triangulation_3_layers::Flat_triangulation_3`, named `Tr_Base`
+as CGAL names the base of `Delaunay_triangulation_3`; it is not built on its
+own, and its members are documented here as the class's own. The user
+manual's Software Design section draws the layers.
 
 \sa `CGAL::Delaunay_triangulation_3`
 */
@@ -958,8 +959,8 @@ bool read(std::istream& is, std::string* error = nullptr);
 /// @}
 
 /// \name Internal Access
-/// Public so that handles and iterators can reach the arrays; not part of the
-/// interface users should rely on.
+/// Public for the package's own exports (the Python module, the file writers,
+/// `convert_to_cgal()`); not part of the interface users should rely on.
 /// @{
 
 /*!
@@ -978,10 +979,10 @@ A cell incident to vertex id `v`, or a null handle in dimension -1.
 Cell_handle incident_cell_of(Fast_Delaunay_triangulation_3_internal::Vertex_id v) const;
 
 /*!
-The smallest index among the cells around edge `(i, j)` of cell `t`.
+The storage anchor that handles point at: the arrays, the kernel's points,
+the infos and the records of user bases.
 */
-Fast_Delaunay_triangulation_3_internal::Tet_id
-smallest_cell_around_edge(Fast_Delaunay_triangulation_3_internal::Tet_id t, int i, int j) const;
+const Anchor* storage_anchor() const;
 
 /// @}
 

@@ -4,8 +4,8 @@
 // The facet and edge iterators of the triangulation layer
 // (Flat_triangulation_3.h): codes over the cell slots of the anchor's arrays.
 
-#ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_FACE_ITERATORS_H
-#define CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_FACE_ITERATORS_H
+#ifndef CGAL_FDT3_INTERNAL_FACE_ITERATORS_H
+#define CGAL_FDT3_INTERNAL_FACE_ITERATORS_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 
@@ -122,9 +122,7 @@ private:
     if(!m.is_live(t)) return false;
     const int i = cell_edge_vertices[code % 6][0], j = cell_edge_vertices[code % 6][1];
     if(j > dimension) return false;
-    if(finite_only && (m.vertex(t, i) == ghost_vertex ||
-                       m.vertex(t, j) == ghost_vertex))
-      return false;
+    if(finite_only && (m.vertex(t, i) == ghost_vertex || m.vertex(t, j) == ghost_vertex)) return false;
     if(dimension == 1) return true;
     if(dimension == 2) return m.neighbor(t, 3 - i - j) > t;
     return dimension == 3 && tr_->smallest_cell_around_edge(t, i, j) == t;
@@ -139,7 +137,11 @@ private:
     }
     if(code_ < end) set_edge();
   }
-  void set_edge() { edge_ = Edge(Cell_handle(tr_, code_ / 6), cell_edge_vertices[code_ % 6][0], cell_edge_vertices[code_ % 6][1]); }
+  void set_edge()
+  {
+    const int k = static_cast<int>(code_ % 6);
+    edge_ = Edge(Cell_handle(tr_, code_ / 6), cell_edge_vertices[k][0], cell_edge_vertices[k][1]);
+  }
   const Anchor* tr_ = nullptr;
   std::size_t code_ = 0;
   Edge edge_;
@@ -148,4 +150,4 @@ private:
 } // namespace Fast_Delaunay_triangulation_3_internal
 } // namespace CGAL
 
-#endif // CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_FACE_ITERATORS_H
+#endif // CGAL_FDT3_INTERNAL_FACE_ITERATORS_H

@@ -5,12 +5,13 @@
 // over the flat data structure, as CGAL's Triangulation_3 is over its
 // Triangulation_data_structure_3.  Types, handles and iterators, access,
 // point location, adjacency and circulators, the segment traverser, and the
-// storage they all read (the anchor).  It inserts and removes nothing: the
-// Delaunay layer (CGAL/Fast_Delaunay_triangulation_3.h) derives from it and
-// changes the triangulation.
+// storage they all read (the anchor).  It inserts, removes and moves no
+// vertex: the Delaunay layer (CGAL/Fast_Delaunay_triangulation_3.h) derives
+// from it and does.  What it writes: clear(), and the combinatorial updates
+// of tds() (flips, create_vertex, copy_tds), as CGAL's Triangulation_3 does.
 
-#ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_FLAT_TRIANGULATION_3_H
-#define CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_FLAT_TRIANGULATION_3_H
+#ifndef CGAL_FDT3_INTERNAL_FLAT_TRIANGULATION_3_H
+#define CGAL_FDT3_INTERNAL_FLAT_TRIANGULATION_3_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Adjacency_queries.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Face_iterators.h>
@@ -28,7 +29,6 @@
 
 #include <CGAL/Default.h>
 #include <CGAL/Triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Iterator_range.h>
 #include <CGAL/Location_policy.h>
 #include <CGAL/Triangulation_utils_3.h>
@@ -37,15 +37,8 @@
 #include <CGAL/utility.h>
 #include <CGAL/tags.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#include <tbb/task_arena.h>
-#endif
-
 #include <algorithm>
 #include <cstdint>
-#include <functional>
-#include <iostream>
 #include <iterator>
 #include <memory>
 #include <sstream>
@@ -84,10 +77,15 @@ struct Template_arguments
 };
 } // namespace Fast_Delaunay_triangulation_3_internal
 
+// A namespace of its own, with no free function in it: the namespace of a
+// base class joins the argument-dependent lookup of every call with the
+// public class as an argument, and the internal namespace's functions
+// (write_vtu, locate, ...) would then compete with CGAL's and the user's.
+namespace Fast_Delaunay_triangulation_3_layers {
+
 // The triangulation layer of CGAL::Fast_Delaunay_triangulation_3, which
 // derives from it as CGAL's Delaunay_triangulation_3 derives from
-// Triangulation_3.  Not built on its own (its constructors are protected):
-// it changes nothing but what the Delaunay layer asks.
+// Triangulation_3.  Not built on its own (its constructors are protected).
 template <class Gt, class Tds_, class Location_policy_, class Lock_data_structure_>
 class Flat_triangulation_3 : public Triangulation_utils_3
 {
@@ -502,7 +500,7 @@ public:
   // infinite vertex.  The cell found may differ from CGAL's when several
   // qualify (a point on a facet, an edge or a vertex); lt never does.  Below
   // dimension 3, CGAL's locate on CGAL's triangulation of the same vertices
-  // answers (Lower_dimensions.h), from the start cell given; a point that is
+  // answers (Lower_dimension_view.h), from the start cell given; a point that is
   // no double is located by the kernel's predicates (Kernel_queries.h).
   Cell_handle locate(const Point& p, Locate_type& lt, int& li, int& lj, Cell_handle start = Cell_handle(),
                      bool* could_lock_zone = nullptr) const
@@ -1021,6 +1019,7 @@ protected:
   int threads_ = std::is_same<Concurrency_tag, Parallel_tag>::value ? 0 : 1;
 };
 
+} // namespace Fast_Delaunay_triangulation_3_layers
 } // namespace CGAL
 
-#endif // CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_FLAT_TRIANGULATION_3_H
+#endif // CGAL_FDT3_INTERNAL_FLAT_TRIANGULATION_3_H

@@ -6,11 +6,13 @@
 // kept beside them (Lower_dimensions.h), answers, and each of its cells has
 // a slot of ours.  This view takes our handles, asks CGAL's triangulation
 // with its own, and gives the answer back in our handles, in CGAL's order.
-// The triangulation and Delaunay layers call it wherever dimension() < 3;
-// they never see CGAL's handles.
+// The triangulation and Delaunay layers call it wherever dimension() < 3
+// (except for the queries at points that are no doubles, which the
+// kernel's predicates answer, Kernel_queries.h, and for the file writer,
+// which builds CGAL's triangulation of the points afresh).
 
-#ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_LOWER_DIMENSION_VIEW_H
-#define CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_LOWER_DIMENSION_VIEW_H
+#ifndef CGAL_FDT3_INTERNAL_LOWER_DIMENSION_VIEW_H
+#define CGAL_FDT3_INTERNAL_LOWER_DIMENSION_VIEW_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 
@@ -161,6 +163,18 @@ public:
     });
   }
 
+  // Where a caller located p (CGAL's insert(p, lt, c, li, lj)), in CGAL's terms.
+  template <class Locate_type>
+  typename Lower::Location location(Locate_type lt, Cell_handle c, int li, int lj) const
+  {
+    typename Lower::Location where;
+    where.type = static_cast<typename Lower::Locate_type>(lt);
+    where.cell = reference(c);
+    where.li = li;
+    where.lj = lj;
+    return where;
+  }
+
   // ---------------------------------------------------------------- handles both ways
   // Every CGAL cell has its slot, the one cell of the empty triangulation included.
   Reference_cell reference(Cell_handle c) const { return c ? lower().cell(c.index()) : Reference_cell(); }
@@ -210,4 +224,4 @@ private:
 } // namespace Fast_Delaunay_triangulation_3_internal
 } // namespace CGAL
 
-#endif // CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_LOWER_DIMENSION_VIEW_H
+#endif // CGAL_FDT3_INTERNAL_LOWER_DIMENSION_VIEW_H

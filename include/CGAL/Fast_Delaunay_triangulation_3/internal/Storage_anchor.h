@@ -2,13 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The data of one triangulation (flat arrays, infos, user records, the
-// traits), kept on the heap and owned by the public class through a pointer.
-// Handles and iterators point here, not at the public object: swap() and the
-// moves exchange the pointer, so a handle keeps designating its vertex or
-// cell wherever the data goes, as CGAL's handles (pointers into the data
-// structure, which swap and move hand over) do.  The anchor never moves
-// while it lives, so `c->vertex(i)` reads anchor->core.mesh as it read the
-// public object's arrays before: the same loads.
+// traits), kept on the heap and owned through a pointer by the triangulation
+// layer (Flat_triangulation_3.h).  Handles and iterators point here, not at
+// the triangulation object: swap() and the moves exchange the pointer, so a
+// handle keeps designating its vertex or cell wherever the data goes, as
+// CGAL's handles (pointers into the data structure, which swap and move hand
+// over) do.  The anchor never moves while it lives, and `c->vertex(i)` reads
+// anchor->core.mesh with the loads a pointer to the triangulation would need.
 //
 // Everything a handle dereference needs is answered here, without the
 // public object (which may have been swapped away from this data).

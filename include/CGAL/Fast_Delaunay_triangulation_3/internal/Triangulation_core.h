@@ -3,8 +3,10 @@
 //
 // The triangulation without CGAL types: flat arrays, the dimension, and the
 // main insertion loop of Algorithm 1 (INIT, SORT, then WALK / CAVITY /
-// DELAUNAYBALL per point).  The public class template wraps it with handles
-// and iterators; data flows one way: points -> sort -> kernel -> arrays.
+// DELAUNAYBALL per point).  The triangulation layer (Flat_triangulation_3.h)
+// wraps it with handles and iterators, the Delaunay layer (the public class)
+// calls its insertions, removals and moves; data flows one way: points ->
+// sort -> kernel -> arrays.
 //
 // Dimensions below 3: the (distinct) vertices and CGAL's lower-dimensional
 // cells, kept by a CGAL triangulation updated point by point
