@@ -17,9 +17,6 @@
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 
-// The vertices of the six edges of a cell, in the order of edge codes.
-inline constexpr int cell_edge_vertices[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-
 // Facets and edges are enumerated once each, from the cell of smallest
 // index among those that share them.  Both are bidirectional, as CGAL's:
 // a code is listed when accepts(code), in either direction.  A facet's code

@@ -72,6 +72,10 @@ constexpr Vertex_id no_vertex = max_vertices;
 // Tetrahedron slots addressable by a facet code.
 constexpr std::uint64_t max_tets = (std::uint64_t(std::numeric_limits<Facet_code>::max()) >> 2) + 1;
 
+// The slots of the two vertices of each of a tetrahedron's six edges (the
+// order of the edge iterators' codes, Face_iterators.h).
+inline constexpr int cell_edge_vertices[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
 inline Tet_id tet_of(Facet_code code) { return Tet_id(code >> 2); }
 inline int facet_of(Facet_code code) { return static_cast<int>(code & 3); }
 inline Facet_code facet_code(Tet_id t, int facet)

@@ -706,12 +706,11 @@ private:
 
   Outcome remove_best_edge(Worker& w, Tet_id t)
   {
-    static const int edges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
     bool foreign = false;
     Edge_ring best_ring, r;
     double best_gain = 0, best_quality = 0;
     int best_split[max_ring_limit][max_ring_limit], split[max_ring_limit][max_ring_limit];
-    for(const auto& e : edges) {
+    for(const auto& e : cell_edge_vertices) {
       const Outcome o = edge_ring(w, t, e[0], e[1], r, options_.max_ring);
       if(o == Outcome::foreign) foreign = true;
       if(o != Outcome::found) continue;
@@ -1039,7 +1038,6 @@ private:
   // mean size of the split simplex's vertices, and may be relocated later.
   Outcome add_steiner_point(Worker& w, Tet_id t)
   {
-    static const int edges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
     Flat_storage& m = cm_.mesh;
     // A tetrahedron no split helped is not searched again in a later pass
     // (its surroundings rarely change, and the search is the costly part).
@@ -1051,7 +1049,7 @@ private:
     bool foreign = false;
     Split best;
     Edge_ring r;
-    for(const auto& e : edges) {
+    for(const auto& e : cell_edge_vertices) {
       const Outcome o = edge_ring(w, t, e[0], e[1], r, max_ring_limit);
       foreign |= o == Outcome::foreign;
       if(o != Outcome::found) continue;

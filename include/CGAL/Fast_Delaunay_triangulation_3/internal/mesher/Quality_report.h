@@ -16,6 +16,7 @@
 #ifndef CGAL_FDT3_INTERNAL_MESHER_QUALITY_REPORT_H
 #define CGAL_FDT3_INTERNAL_MESHER_QUALITY_REPORT_H
 
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Refinement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
@@ -95,7 +96,6 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   gammas.reserve(mesh.tetrahedra.size());
   smallest_angles.reserve(mesh.tetrahedra.size());
 
-  static const int edge_of[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   std::map<std::pair<std::uint32_t, std::uint32_t>, double> edges;
   std::map<std::array<std::uint32_t, 3>, std::vector<int>> facet_sides;
   for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
@@ -117,7 +117,7 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
     q.tetrahedra_below_gamma_0_3 += gamma < 0.3 ? 1 : 0;
     ++q.gamma_histogram[static_cast<std::size_t>(std::min(9.0, std::max(0.0, gamma * 10)))];
     double shortest = std::numeric_limits<double>::infinity();
-    for(const auto& e : edge_of) {
+    for(const auto& e : cell_edge_vertices) {
       const double l = distance(w[e[0]], w[e[1]]);
       shortest = std::min(shortest, l);
       const double h = (mesh.size[tv[e[0]]] + mesh.size[tv[e[1]]]) / 2;
