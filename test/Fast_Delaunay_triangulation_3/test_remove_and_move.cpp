@@ -14,7 +14,9 @@
 #include <CGAL/Triangulation_data_structure_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <random>
@@ -489,6 +491,97 @@ TEST(Move, InPlaceOnAGridDecidedByThePerturbation)
     t.check(("grid move " + std::to_string(s)).c_str());
   }
   EXPECT_GT(kept, 0);
+}
+
+// The sorted point keys of a finite cell.
+Cell_key key_of(Fast_dt::Cell_handle c)
+{
+  Cell_key key;
+  for(int i = 0; i < 4; ++i) key[i] = point_key(c->vertex(i)->point());
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+// Short moves of interior and hull vertices: by Lawson's flips on random
+// points, and on a grid, whose ties get the flips stuck (four points in a
+// plane), by the flips undone and the star re-triangulated.  CGAL keeps the
+// cells without v that are in the triangulation of the moved points: each
+// keeps its handle, its vertices and its info; the cells reported as new
+// are exactly the others of the triangulation after the move.
+// step > 0: each coordinate of a move a multiple of step (more ties).
+void check_cells_kept_by_moves(const std::vector<Point>& points, double scale, double step, int moves,
+                               std::uint64_t seed)
+{
+  Tracked t;
+  for(const Point& p : points) t.insert(p);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int info = 1, moves_with_new_cells_without_v = 0;
+  for(int s = 0; s < moves && !::testing::Test::HasFatalFailure(); ++s) {
+    const std::size_t k = rng() % t.vertices.size();
+    const Vertex_handle v = t.vertices[k].first;
+    const Point& from = t.vertices[k].second;
+    auto offset = [&] { return step > 0 ? step * std::round(scale * u(rng) / step) : scale * u(rng); };
+    const Point to(from.x() + offset(), from.y() + offset(), from.z() + offset());
+    bool collides = to == from;
+    for(const auto& e : t.vertices) collides = collides || e.second == to;
+    if(collides) continue;
+    std::vector<Point> moved = t.points();
+    moved[k] = to;
+    const Cgal_dt after(moved.begin(), moved.end());
+    const std::vector<Cell_key> after_keys = finite_cell_keys(after);
+    struct Kept
+    {
+      Fast_dt::Cell_handle c;
+      Cell_key key;
+      int info;
+    };
+    std::vector<Kept> kept;
+    std::vector<Cell_key> kept_keys;
+    for(auto c = t.tr.finite_cells_begin(); c != t.tr.finite_cells_end(); ++c) {
+      c->info() = info++;
+      const Cell_key key = key_of(c);
+      if(!c->has_vertex(v) && std::binary_search(after_keys.begin(), after_keys.end(), key)) {
+        kept.push_back({c, key, c->info()});
+        kept_keys.push_back(key);
+      }
+    }
+    std::vector<Fast_dt::Cell_handle> made;
+    ASSERT_EQ(t.tr.move_if_no_collision_and_give_new_cells(v, to, std::back_inserter(made)), v);
+    t.vertices[k].second = to;
+    for(const Kept& e : kept) {
+      ASSERT_TRUE(t.tr.is_cell(e.c)) << "move " << s;
+      EXPECT_EQ(key_of(e.c), e.key) << "move " << s;
+      EXPECT_EQ(e.c->info(), e.info) << "move " << s;
+    }
+    std::vector<Cell_key> made_keys, expected;
+    bool without_v = false;
+    for(Fast_dt::Cell_handle c : made)
+      if(!t.tr.is_infinite(c)) {
+        made_keys.push_back(key_of(c));
+        without_v = without_v || !c->has_vertex(v);
+      }
+    moves_with_new_cells_without_v += without_v;
+    std::sort(made_keys.begin(), made_keys.end());
+    std::sort(kept_keys.begin(), kept_keys.end());
+    std::set_difference(after_keys.begin(), after_keys.end(), kept_keys.begin(), kept_keys.end(),
+                        std::back_inserter(expected));
+    EXPECT_EQ(made_keys, expected) << "move " << s;
+    t.check(("move " + std::to_string(s)).c_str());
+  }
+  // Flips that made cells without v (a 2-3 flip of a facet through v, or
+  // cells beyond the star in conflict with the new point) were met.
+  EXPECT_GT(moves_with_new_cells_without_v, moves / 10);
+}
+
+TEST(Move, ShortMovesKeepTheCellsCgalKeeps)
+{
+  std::mt19937_64 rng(41);
+  // Mean spacing of 200 points in the unit cube: 0.17.
+  check_cells_kept_by_moves(random_points(200, rng), 0.05, 0, 80, 42);
+  std::vector<Point> points = grid(4);
+  for(Point& p : points) p = Point(p.x() / 4, p.y() / 4, p.z() / 4);
+  check_cells_kept_by_moves(points, 1.0 / 16, 1.0 / 64, 60, 43);
 }
 
 TEST(Move, IsDelaunayAfterDisplacementRefusesBadInput)

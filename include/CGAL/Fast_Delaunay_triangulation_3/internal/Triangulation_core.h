@@ -21,6 +21,7 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/BRIO.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Displacement_flips.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Lower_dimensions.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
@@ -436,35 +437,50 @@ public:
   }
 
   // Moves live vertex v (dimension 3; `start` a tetrahedron of v) to p when
-  // p stays in the star of v (Vertex_displacement.h): in place if the star
-  // is still Delaunay with p for v's point (`new_cells`: the tetrahedra of v,
-  // in their slots), else by re-triangulating the star and the tetrahedra in
-  // conflict with p beyond it from their vertices and p at once (the hole of
-  // Vertex_displacement.h, filled by Vertex_removal.h), which costs about one
-  // removal.  Otherwise returns
+  // p stays in the kernel of the star of v (Vertex_displacement.h).  On the
+  // hull, only if the star is still Delaunay with p for v's point (`new_cells`:
+  // the tetrahedra of v, in their slots).  Inside, by Lawson's flips from the
+  // star with p (Displacement_flips.h; `new_cells`: the tetrahedra of v and
+  // those the flips made); where they get stuck, by re-triangulating the
+  // star and the tetrahedra in conflict with p beyond it from their vertices
+  // and p at once (the hole of Vertex_displacement.h, filled by
+  // Vertex_removal.h), which costs about one removal.  Otherwise returns
   // false and changes nothing: the caller removes v and inserts p.
   bool move_within_star(Vertex_id v, const double* p, Tet_id start, std::vector<Tet_id>& new_cells)
   {
     CGAL_precondition(dimension == 3 && v < vertex_slots() && !mesh.is_dead(v));
     new_cells.clear();
     Removal_hole& hole = removal_.hole;
-    carve_hole(mesh, v, start, hole);
-    const Displacement displacement = classify_displacement(mesh, v, p, hole.star);
-    if(displacement == Displacement::elsewhere) return false;
-    if(displacement == Displacement::inside_star) {
-      add_conflicts_of_moved_point(mesh, v, p, hole);
-      if(!removal_.link.build(mesh, hole.link, p)) return false;
-    }
+    cells_around_vertex(mesh, start, v, hole.star);
+    extend_bounding_box_to(p); // the filter covers p
+    const Static_filter filter = Static_filter::for_box(box_lo_, box_hi_);
+    bool on_hull = false;
+    if(!star_positive_with(mesh, v, p, hole.star, filter, on_hull)) return false;
+    if(on_hull && !star_locally_delaunay_with(mesh, v, p, hole.star, filter)) return false;
     double old_point[3];
     for(int a = 0; a < 3; ++a) {
       old_point[a] = mesh.vertices[v].xyz[a];
       mesh.vertices[v].xyz[a] = p[a];
     }
-    if(displacement == Displacement::keeps_cells) {
+    if(on_hull) {
       new_cells.assign(hole.star.begin(), hole.star.end());
-      if(mesh.with_sub_determinants)
-        for(Tet_id t : new_cells) update_sub_determinants(mesh, t);
+    } else if(flips_.run(mesh, v, hole.star, filter, max_flips_per_move)) {
+      new_cells.assign(hole.star.begin(), hole.star.end());
+      if(flips_.flips() != 0) {
+        flips_.made_slots(new_cells);
+        std::sort(new_cells.begin(), new_cells.end());
+        new_cells.erase(std::unique(new_cells.begin(), new_cells.end()), new_cells.end());
+        new_cells.erase(
+            std::remove_if(new_cells.begin(), new_cells.end(), [this](Tet_id t) { return !mesh.is_live(t); }),
+            new_cells.end());
+      }
     } else {
+      flips_.undo();
+      for(int a = 0; a < 3; ++a) mesh.vertices[v].xyz[a] = old_point[a];
+      carve_found_star(mesh, v, hole);
+      add_conflicts_of_moved_point(mesh, v, p, hole, filter);
+      if(!removal_.link.build(mesh, hole.link, p)) return false;
+      for(int a = 0; a < 3; ++a) mesh.vertices[v].xyz[a] = p[a];
       hole.inner = v;
       if(!fill_hole_with_link_cells(mesh, hole, removal_.link.mesh(), removal_.filling, new_cells)) {
         // Ruled out by the uniqueness of the perturbed triangulation; nothing
@@ -475,7 +491,8 @@ public:
         return false;
       }
     }
-    extend_bounding_box_with(v);
+    if(mesh.with_sub_determinants)
+      for(Tet_id t : new_cells) update_sub_determinants(mesh, t);
     hint_ = new_cells.front();
     return true;
   }
@@ -487,7 +504,12 @@ public:
     CGAL_precondition(dimension == 3 && v < vertex_slots() && !mesh.is_dead(v));
     std::vector<Tet_id> star;
     cells_around_vertex(mesh, start, v, star);
-    return classify_displacement(mesh, v, p, star) == Displacement::keeps_cells;
+    double lo[3], hi[3];
+    for(int a = 0; a < 3; ++a) {
+      lo[a] = std::min(box_lo_[a], p[a]);
+      hi[a] = std::max(box_hi_[a], p[a]);
+    }
+    return classify_displacement(mesh, v, p, star, Static_filter::for_box(lo, hi)) == Displacement::keeps_cells;
   }
 
   // Exact validity: combinatorics, orientation and the (perturbed) local
@@ -650,11 +672,12 @@ private:
         box_hi_[a] = std::max(box_hi_[a], mesh.vertices[v].xyz[a]);
       }
   }
-  void extend_bounding_box_with(Vertex_id v)
+  void extend_bounding_box_with(Vertex_id v) { extend_bounding_box_to(mesh.vertices[v].xyz); }
+  void extend_bounding_box_to(const double* p)
   {
     for(int a = 0; a < 3; ++a) {
-      box_lo_[a] = std::min(box_lo_[a], mesh.vertices[v].xyz[a]);
-      box_hi_[a] = std::max(box_hi_[a], mesh.vertices[v].xyz[a]);
+      box_lo_[a] = std::min(box_lo_[a], p[a]);
+      box_hi_[a] = std::max(box_hi_[a], p[a]);
     }
   }
   void reset_bounding_box()
@@ -851,6 +874,10 @@ private:
     Link_triangulation link;
     Hole_filling_buffers filling;
   } removal_;
+  // Kept from one move to the next.  Beyond this many flips a move takes the
+  // general path: a short move needs a few.
+  Displacement_flips flips_;
+  static constexpr std::size_t max_flips_per_move = 256;
 };
 
 inline bool Triangulation_core::is_valid(std::string* why) const
