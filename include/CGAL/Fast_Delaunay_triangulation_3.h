@@ -420,11 +420,7 @@ public:
   // triangulation beside the arrays removes it.  The infinite vertex, a
   // removed vertex or a handle of another triangulation throw
   // std::invalid_argument, and nothing changes.
-  void remove(Vertex_handle v)
-  {
-    std::vector<Tet_id> made;
-    remove_vertex(v, made);
-  }
+  void remove(Vertex_handle v) { remove_vertex(v, anchor_->made_cells); }
   // CGAL's concurrency-safe spelling: nothing is locked, the zone is always granted.
   bool remove(Vertex_handle v, bool* could_lock_zone)
   {
@@ -483,14 +479,13 @@ public:
   // 3, when the cells of v with p for its point are still the Delaunay
   // triangulation (is_delaunay_after_displacement), only the point changes
   // and the cells of v keep their slots; when v is not on the hull and p is
-  // in the kernel of its star, the star and the cells beyond it in conflict
-  // with p are re-triangulated from their vertices and p at once; otherwise
-  // v is removed and inserted again under the same id.  A NaN or infinite
+  // in the kernel of its star, flips from the star with p make it Delaunay
+  // (the cells without v that stay keep their slots and infos); otherwise v
+  // is removed and inserted again under the same id.  A NaN or infinite
   // coordinate throws std::invalid_argument, nothing changed.
   Vertex_handle move_if_no_collision(Vertex_handle v, const Point& p)
   {
-    std::vector<Tet_id> made;
-    return move_vertex(v, p, false, made);
+    return move_vertex(v, p, false, anchor_->made_cells);
   }
   template <class OutputItCells>
   Vertex_handle move_if_no_collision_and_give_new_cells(Vertex_handle v, const Point& p, OutputItCells fit)
@@ -502,11 +497,7 @@ public:
   }
   // CGAL's move: as move_if_no_collision, except that if p is another
   // vertex w, v is removed and w returned.
-  Vertex_handle move(Vertex_handle v, const Point& p)
-  {
-    std::vector<Tet_id> made;
-    return move_vertex(v, p, true, made);
-  }
+  Vertex_handle move(Vertex_handle v, const Point& p) { return move_vertex(v, p, true, anchor_->made_cells); }
 
   // CGAL's is_delaunay_after_displacement (dimension 3): whether the cells
   // of v, with p for v's point, are still the Delaunay triangulation, so

@@ -16,6 +16,7 @@
 #include <CGAL/circulator_bases.h>
 #include <CGAL/Triangulation_utils_3.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -37,6 +38,14 @@ public:
   {
     if(2 * (count_ + 1) > slots_.size()) grow();
     return place(slots_, id);
+  }
+  // Empties the set for the next query, keeping its table unless a big star
+  // made it large.
+  void clear()
+  {
+    if(slots_.size() > 256) slots_.assign(64, empty);
+    else std::fill(slots_.begin(), slots_.end(), empty);
+    count_ = 0;
   }
   bool contains(std::uint64_t id) const
   {
@@ -100,15 +109,23 @@ inline int index_of(const Flat_storage& m, Tet_id t, Vertex_id v)
 }
 
 // Every cell that has v, in breadth-first order from `start` (which has v).
-inline void cells_around_vertex(const Flat_storage& m, Tet_id start, Vertex_id v, std::vector<Tet_id>& cells)
+// seen: a set kept by a caller that asks many times (removals, moves).
+inline void cells_around_vertex(const Flat_storage& m, Tet_id start, Vertex_id v, std::vector<Tet_id>& cells,
+                                Id_set& seen)
 {
   CGAL_precondition(index_of(m, start, v) >= 0);
   cells.clear();
-  Id_set seen;
+  seen.clear();
   seen.insert(start);
   cells.push_back(start);
   for(std::size_t k = 0; k < cells.size(); ++k) {
     const Tet_id t = cells[k];
+    // The vertex records are read next (a removal numbers them, a move
+    // reads their points): their loads start here.
+    for(int i = 0; i < 4; ++i) {
+      const Vertex_id w = m.vertex(t, i);
+      if(w != v && w != ghost_vertex) __builtin_prefetch(m.vertices.data() + w);
+    }
     for(int f = 0; f < 4; ++f) {
       if(m.vertex(t, f) == v) continue; // the one facet without v
       const Tet_id u = m.neighbor(t, f);
@@ -120,6 +137,11 @@ inline void cells_around_vertex(const Flat_storage& m, Tet_id start, Vertex_id v
       }
     }
   }
+}
+inline void cells_around_vertex(const Flat_storage& m, Tet_id start, Vertex_id v, std::vector<Tet_id>& cells)
+{
+  Id_set seen;
+  cells_around_vertex(m, start, v, cells, seen);
 }
 
 // The vertices joined to v by an edge, each once with a cell that has the

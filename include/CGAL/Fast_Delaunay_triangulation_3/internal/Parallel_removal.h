@@ -193,7 +193,7 @@ private:
 
     bool remove_one(Flat_storage& m, std::vector<Tet_id>& incident_cells, const Slabs& slabs, int p, Vertex_id v)
     {
-      cells_around_vertex(m, incident_cells[v], v, hole.star);
+      cells_around_vertex(m, incident_cells[v], v, hole.star, hole.seen);
       for(Tet_id t : hole.star)
         for(int i = 0; i < 4; ++i)
           if(!slabs.in(m.vertex(t, i), p)) return false;

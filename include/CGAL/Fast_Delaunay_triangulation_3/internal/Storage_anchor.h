@@ -82,6 +82,7 @@ public:
   Triangulation_core core;
   mutable std::vector<Tet_id> incident_cells; // lazily built v->cell() cache (dimension 3)
   mutable std::size_t walks_without_incident_cells = 0; // removals that located their vertex instead
+  std::vector<Tet_id> made_cells; // the new cells of a removal or a move, kept from one to the next
   Kernel_points<Point, keeps_kernel_points> kernel_points;
   Vertex_infos<Vertex_info> vertex_infos;
   Cell_infos<Cell_info> cell_infos;

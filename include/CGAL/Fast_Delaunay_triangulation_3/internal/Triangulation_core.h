@@ -451,7 +451,7 @@ public:
     CGAL_precondition(dimension == 3 && v < vertex_slots() && !mesh.is_dead(v));
     new_cells.clear();
     Removal_hole& hole = removal_.hole;
-    cells_around_vertex(mesh, start, v, hole.star);
+    cells_around_vertex(mesh, start, v, hole.star, hole.seen);
     extend_bounding_box_to(p); // the filter covers p
     const Static_filter filter = Static_filter::for_box(box_lo_, box_hi_);
     bool on_hull = false;

@@ -85,6 +85,7 @@ struct Removal_hole
   std::vector<Boundary_facet> boundary;
   std::size_t finite_star = 0;      // tetrahedra of the star without the ghost
   Vertex_id inner = ghost_vertex;   // a vertex inside the hole, or ghost_vertex
+  Id_set seen;                      // cells_around_vertex's, kept from one hole to the next
 
   Vertex_id global_id(Vertex_id link_id) const
   {
@@ -144,7 +145,7 @@ inline void carve_found_star(Flat_storage& m, Vertex_id v, Removal_hole& hole)
 // The star of v (start has v), its link and its boundary facets.
 inline void carve_hole(Flat_storage& m, Vertex_id v, Tet_id start, Removal_hole& hole)
 {
-  cells_around_vertex(m, start, v, hole.star);
+  cells_around_vertex(m, start, v, hole.star, hole.seen);
   carve_found_star(m, v, hole);
 }
 
