@@ -75,10 +75,13 @@ partitions space instead). Default: `Default`.
   triangulation's, and the setters (`set_point()`, `set_cell()`,
   `set_vertex()`, `set_neighbor()`, ...) are deleted. A cell's base is reset
   when an insertion replaces the cell, as CGAL's cells are new.
-- `remove(first, last)` and `remove_cluster()` remove the vertices one by
-  one, also with a `Parallel_tag` data structure; `move()` and
-  `move_if_no_collision()` keep the vertex's handle and info, and change only
-  its point when its cells stay Delaunay. The triangulations are CGAL's.
+- `remove(first, last)` and `remove_cluster()` remove the vertices on the
+  threads of the caller's TBB arena with a `Parallel_tag` data structure in
+  dimension 3 (as CGAL 5.5 does), one by one otherwise; `move()` and
+  `move_if_no_collision()` keep the vertex's handle and info, change only
+  its point when its cells stay Delaunay, and keep the cells without the
+  vertex that stay in the triangulation, with their infos. The
+  triangulations are CGAL's.
 - `is_delaunay_after_displacement()` also checks the facets opposite the
   vertex, which CGAL 5.5's test leaves out, and throws
   `std::invalid_argument` below dimension 3 (CGAL's precondition).
@@ -605,7 +608,8 @@ size_type remove_cluster(InputIterator first, InputIterator last);
 
 /*!
 If `p` is the point of another vertex `w`, returns `w` and changes nothing.
-Otherwise moves `v` to `p` and returns `v`, whose handle and info stay. Throws
+Otherwise moves `v` to `p` and returns `v`, whose handle and info stay, as
+do those of the cells without `v` that stay in the triangulation. Throws
 `std::invalid_argument` for a NaN or infinite coordinate, or a bad `v`,
 without change.
 */
