@@ -85,22 +85,21 @@ public:
         if(outcome == Outcome::no_flip_yet) waiting_.push_back(q);
         if(outcome == Outcome::flipped && log_.size() > max_flips) return false;
       }
-      // The waiting facets, once: any that flips now brings new facets to
-      // test; none flips and some are still not locally Delaunay: stuck.
-      bool progress = false, stuck = false;
+      // The waiting facets, once: one that flips now brings new facets to
+      // test; when none flips, those still not locally Delaunay are stuck.
+      bool stuck = false;
       retry_.swap(waiting_);
       waiting_.clear();
       for(const Queued_facet& q : retry_) {
         if(!still_there(q)) continue;
         const Outcome outcome = flip_if_not_locally_delaunay(q.t, q.f);
-        if(outcome == Outcome::flipped) progress = true;
         if(outcome == Outcome::no_flip_yet) {
           stuck = true;
           waiting_.push_back(q);
         }
       }
-      if(!stuck) return true;
-      if(!progress || log_.size() > max_flips) return false;
+      if(log_.size() > max_flips) return false;
+      if(to_test_.empty()) return !stuck;
     }
   }
 
@@ -199,7 +198,7 @@ private:
         (k_first < 0 ? k_first : k_second) = k;
       }
     }
-    Flip flip;
+    Flip flip{};
     if(negative < 0) {
       // 2-3: the new edge from t's fourth vertex to x.
       flip.replaced = 2;

@@ -462,11 +462,9 @@ public:
       old_point[a] = mesh.vertices[v].xyz[a];
       mesh.vertices[v].xyz[a] = p[a];
     }
-    if(on_hull) {
+    if(on_hull || flips_.run(mesh, v, hole.star, filter, max_flips_per_move)) {
       new_cells.assign(hole.star.begin(), hole.star.end());
-    } else if(flips_.run(mesh, v, hole.star, filter, max_flips_per_move)) {
-      new_cells.assign(hole.star.begin(), hole.star.end());
-      if(flips_.flips() != 0) {
+      if(!on_hull && flips_.flips() != 0) {
         flips_.made_slots(new_cells);
         std::sort(new_cells.begin(), new_cells.end());
         new_cells.erase(std::unique(new_cells.begin(), new_cells.end()), new_cells.end());
@@ -474,6 +472,8 @@ public:
             std::remove_if(new_cells.begin(), new_cells.end(), [this](Tet_id t) { return !mesh.is_live(t); }),
             new_cells.end());
       }
+      if(mesh.with_sub_determinants)
+        for(Tet_id t : new_cells) update_sub_determinants(mesh, t);
     } else {
       flips_.undo();
       for(int a = 0; a < 3; ++a) mesh.vertices[v].xyz[a] = old_point[a];
@@ -490,9 +490,8 @@ public:
         for(int a = 0; a < 3; ++a) mesh.vertices[v].xyz[a] = old_point[a];
         return false;
       }
+      // The filling has its sub-determinants (Shared_slots::count_in).
     }
-    if(mesh.with_sub_determinants)
-      for(Tet_id t : new_cells) update_sub_determinants(mesh, t);
     hint_ = new_cells.front();
     return true;
   }
