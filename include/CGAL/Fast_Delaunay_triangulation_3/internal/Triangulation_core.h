@@ -458,10 +458,9 @@ public:
     if(!star_positive_with(mesh, v, p, hole.star, filter, on_hull)) return false;
     if(on_hull && !star_locally_delaunay_with(mesh, v, p, hole.star, filter)) return false;
     double old_point[3];
-    for(int a = 0; a < 3; ++a) {
-      old_point[a] = mesh.vertices[v].xyz[a];
-      mesh.vertices[v].xyz[a] = p[a];
-    }
+    std::copy(mesh.vertices[v].xyz, mesh.vertices[v].xyz + 3, old_point);
+    auto place_v_at = [&](const double* q) { std::copy(q, q + 3, mesh.vertices[v].xyz); };
+    place_v_at(p);
     if(on_hull || flips_.run(mesh, v, hole.star, filter, max_flips_per_move)) {
       new_cells.assign(hole.star.begin(), hole.star.end());
       if(!on_hull && flips_.flips() != 0) {
@@ -476,18 +475,18 @@ public:
         for(Tet_id t : new_cells) update_sub_determinants(mesh, t);
     } else {
       flips_.undo();
-      for(int a = 0; a < 3; ++a) mesh.vertices[v].xyz[a] = old_point[a];
+      place_v_at(old_point);
       carve_found_star(mesh, v, hole);
       add_conflicts_of_moved_point(mesh, v, p, hole, filter);
       if(!removal_.link.build(mesh, hole.link, p)) return false;
-      for(int a = 0; a < 3; ++a) mesh.vertices[v].xyz[a] = p[a];
+      place_v_at(p);
       hole.inner = v;
       if(!fill_hole_with_link_cells(mesh, hole, removal_.link.mesh(), removal_.filling, new_cells)) {
         // Ruled out by the uniqueness of the perturbed triangulation; nothing
         // has changed but v's point.
         CGAL_assertion_msg(false, "a facet of the star of a moved vertex is not in the triangulation of its "
                                   "link and new point");
-        for(int a = 0; a < 3; ++a) mesh.vertices[v].xyz[a] = old_point[a];
+        place_v_at(old_point);
         return false;
       }
       // The filling has its sub-determinants (Shared_slots::count_in).
@@ -508,7 +507,12 @@ public:
       lo[a] = std::min(box_lo_[a], p[a]);
       hi[a] = std::max(box_hi_[a], p[a]);
     }
-    return classify_displacement(mesh, v, p, star, Static_filter::for_box(lo, hi)) == Displacement::keeps_cells;
+    const Static_filter filter = Static_filter::for_box(lo, hi);
+    // Orientation first: it rejects most moves that fail, at a quarter of
+    // the price of an in-sphere test.
+    bool on_hull = false;
+    return star_positive_with(mesh, v, p, star, filter, on_hull) &&
+           star_locally_delaunay_with(mesh, v, p, star, filter);
   }
 
   // Exact validity: combinatorics, orientation and the (perturbed) local

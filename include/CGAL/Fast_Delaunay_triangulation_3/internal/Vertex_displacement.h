@@ -63,16 +63,6 @@ inline bool in_conflict(const Flat_storage& m, Tet_id t, const double* x, const 
 
 } // namespace vertex_displacement_detail
 
-// What moving v to p does to the star of v.
-enum class Displacement
-{
-  keeps_cells,  // the star with p for v is still Delaunay: only the point changes
-  inside_star,  // v is not on the hull and p is in the kernel of its star
-                // (every tetrahedron of v positive with p), but some facet
-                // is no longer locally Delaunay
-  elsewhere     // neither
-};
-
 // Whether every finite tetrahedron of `star` (every tetrahedron of v,
 // cells_around_vertex) is positively oriented with p for v's point;
 // on_hull: whether the star has a ghost.  Exact.  filter: valid for a box
@@ -121,17 +111,6 @@ inline bool star_locally_delaunay_with(const Flat_storage& m, Vertex_id v, const
     }
   }
   return true;
-}
-
-inline Displacement classify_displacement(const Flat_storage& m, Vertex_id v, const double* p,
-                                          const std::vector<Tet_id>& star, const Static_filter& filter)
-{
-  // Orientation first: it rejects most moves that fail, at a quarter of the
-  // price of an in-sphere test.
-  bool on_hull = false;
-  if(!star_positive_with(m, v, p, star, filter, on_hull)) return Displacement::elsewhere;
-  if(star_locally_delaunay_with(m, v, p, star, filter)) return Displacement::keeps_cells;
-  return on_hull ? Displacement::elsewhere : Displacement::inside_star;
 }
 
 // The hole of a move of v to p in the kernel of the star of v (v not on the
