@@ -216,6 +216,18 @@ inline void expect_valid(const mi::Constrained_mesh& cm)
   EXPECT_EQ(live, cm.mesh.live_tets);
   EXPECT_EQ(ghosts, cm.mesh.ghost_tets);
   for(Tet_id t : cm.mesh.free_tets) EXPECT_FALSE(cm.mesh.is_live(t));
+  // No vertex dropped: a replacement whose region swallowed a vertex's
+  // whole star would leave it in no tetrahedron, which the facets alone
+  // do not show.
+  std::vector<char> used(cm.mesh.vertices.size(), 0);
+  for(Tet_id t = 0; t < cm.mesh.number_of_slots(); ++t) {
+    if(!cm.mesh.is_live(t)) continue;
+    for(int i = 0; i < 4; ++i) {
+      const Vertex_id v = cm.mesh.vertex(t, i);
+      if(v < used.size()) used[v] = 1;
+    }
+  }
+  EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0) << "vertices in no tetrahedron";
 }
 
 } // namespace improvement_cases

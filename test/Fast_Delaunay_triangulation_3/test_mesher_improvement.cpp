@@ -8,9 +8,10 @@
 // rings of 3 to 7 tetrahedra); random Delaunay meshes, one and two
 // subdomains: valid, positively oriented (exact), constrained facets,
 // surface vertices and subdomain volumes unchanged, the worst gamma never
-// lower; interior Steiner points where every vertex is on the surface;
-// the replacement refusing a region it does not close; the mesher
-// with and without the step, through the quality report.
+// lower, no vertex dropped; interior Steiner points where every vertex is
+// on the surface, and in cavities under CGAL's elephant; the replacement
+// refusing a region it does not close; the mesher with and without the
+// step, through the quality report.
 
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Tetrahedra_replacement.h>
@@ -194,7 +195,7 @@ TEST(Improvement, TwoSubdomainsKeepTheirInterface)
 
 // Every vertex on the surface: relocation cannot help, edge removal and
 // face flips only so far; what is left needs interior Steiner points, which
-// split edges or facets and are placed by the relocation's search.
+// split edges or facets or fill cavities, placed by the relocation's search.
 TEST(Improvement, SteinerPointsWhereNoVertexMayMove)
 {
   mi::Constrained_mesh without = sphere_points_mesh(60, 5);

@@ -100,7 +100,7 @@ struct Improvement_statistics
   // the surface itself forces them.
   std::size_t bad_after_forced_by_surface = 0;
   std::size_t edge_removals = 0, face_removals = 0, relocations = 0;
-  std::size_t steiner_points = 0; // interior vertices added by edge or facet splits
+  std::size_t steiner_points = 0; // interior vertices added by edge or facet splits or in a cavity
   std::size_t deferred = 0; // operations that met another partition and were retried
   std::size_t operations_in_partitions = 0; // of the operations, those done in attempts with several partitions
   int passes = 0;
@@ -172,10 +172,15 @@ public:
 private:
   static constexpr int max_ring_limit = 10;
   static constexpr std::size_t max_ball = 256;
-  // Tetrahedra a Steiner point's region may replace.
+  // Tetrahedra a Steiner point's cavity may replace.  The cavities that
+  // fix a sliver under a nearly flat surface edge hold 20 to 40 (elephant);
+  // the cone over 64 has at most 2 * 64 + 2 tetrahedra, which the position
+  // search's fixed arrays (max_ball) hold.
   static constexpr std::size_t max_steiner_region = 64;
+  static_assert(2 * max_steiner_region + 2 <= max_ball, "a cavity's cone fits the position search");
   // Rounds of the position search for a new Steiner point: it starts at an
-  // edge's midpoint or a facet's centroid, far from where it belongs.
+  // edge's midpoint, a facet's centroid or a facet's regular apex, rarely
+  // where it belongs.
   static constexpr int steiner_search_rounds = 4;
 
   static std::size_t operations(const Improvement_statistics& s)
@@ -209,6 +214,7 @@ private:
     std::vector<std::array<Vertex_id, 4>> ball_corners;
     std::vector<std::array<Vertex_id, 4>> made;
     std::vector<Tet_id> slots;
+    std::vector<Vertex_id> inside, on_boundary; // star_of_region's scratch
 
     std::size_t slots_left() const { return free_slots->size() + (fresh_end - next_fresh); }
     Tet_id new_slot()
@@ -365,10 +371,13 @@ private:
   }
 
   // ------------------------------------------------------------ partitions
-  // Every operation on t reads only tetrahedra that share a vertex with t,
-  // and every change marks the vertices of the tetrahedra it made or moved
-  // (changed_): a bad tetrahedron none of whose vertices changed in the last
-  // pass would meet the same refusals again, and is skipped (active_).
+  // Every operation on t but the Steiner cavity reads only tetrahedra that
+  // share a vertex with t, and every change marks the vertices of the
+  // tetrahedra it made or moved (changed_): a bad tetrahedron none of whose
+  // vertices changed in the last pass would meet the same refusals again,
+  // and is skipped (active_).  A cavity reaches further, so a skipped
+  // tetrahedron may miss one that a change further off would now allow: a
+  // chance lost, never validity.
   bool is_active(Tet_id t) const
   {
     const Vertex_id* tv = cm_.mesh.vertex_ids(t);
@@ -455,7 +464,10 @@ private:
   // operation on a bad tetrahedron adds at most max_ring - 4 tetrahedra
   // (edge removal), or max_ring_limit (a Steiner point on an edge of that
   // ring), and each bad tetrahedron gets at most one topological operation.
-  // A single worker is the sequential step, the one that may add vertices.
+  // A single worker is the sequential step, the one that may add vertices;
+  // a Steiner cavity adds up to max_steiner_region + 2, and that worker,
+  // alone, grows its range at the arrays' end when it runs short
+  // (grow_fresh_range) rather than reserving that much per bad tetrahedron.
   std::vector<Tet_id> run_workers(std::vector<std::vector<Tet_id>>& lists, Improvement_statistics& stats)
   {
     Flat_storage& m = cm_.mesh;
@@ -503,6 +515,18 @@ private:
     m.resize_tets(workers[partitions - 1].next_fresh, Flat_storage::New_slots::left_unwritten);
     cm_.fit_slot_arrays();
     return retry;
+  }
+
+  // The sequential worker's fresh range ends where the arrays end: it may
+  // extend both (nothing else runs).
+  void grow_fresh_range(Worker& w, std::size_t at_least)
+  {
+    Flat_storage& m = cm_.mesh;
+    CGAL_precondition(w.may_add_vertices && w.fresh_end == m.number_of_slots());
+    const std::size_t extra = std::max<std::size_t>(at_least, 1024);
+    m.resize_tets(w.fresh_end + extra, Flat_storage::New_slots::left_unwritten);
+    cm_.fit_slot_arrays();
+    w.fresh_end = static_cast<Tet_id>(w.fresh_end + extra);
   }
 
   bool owned_by(Tet_id t, std::uint8_t p) const
@@ -1003,10 +1027,12 @@ private:
       worst = std::min(worst, g);
       bad_in_region += g < options_.quality_threshold ? 1 : 0;
     }
-    // Two starts: the split simplex's centre, and halfway from it to the
-    // region's centre.  Where the region is a flat sliver between two
-    // surface triangles, the midpoint lies on the surface's near-plane
-    // and the search from it stays flat; the second start is inside.
+    // Two starts: the given one (the split simplex's centre, or a facet's
+    // regular apex), and halfway from it to the centre of the new
+    // tetrahedra's other corners.  Where the region is a flat sliver
+    // between two surface triangles, a midpoint lies on the surface's
+    // near-plane and the search from it stays flat; the second start is
+    // inside.
     double centre[3] = {0, 0, 0};
     std::size_t corners = 0;
     for(const auto& tv : w.made)
@@ -1042,15 +1068,25 @@ private:
   // (distinct tetrahedra of one subdomain, connected through facets), each
   // made from its tetrahedron with c in place of the vertex opposite the
   // facet, so that c on the inner side makes it positive.  If all of them
-  // are positive, they fill the region exactly.  False when a facet inside
-  // the region is constrained (an input triangle would go).
+  // are positive, they fill the region exactly (the cone and the region
+  // have the same boundary), so the region is a ball and every new facet
+  // through c has two tetrahedra.  What positivity does not see is a vertex
+  // inside the region and on none of its boundary facets: the mesh mostly
+  // is not Delaunay any more, so a cavity grown by spheres may hold a whole
+  // vertex star, and the cone would drop that vertex.  False then, and
+  // when a facet inside the region is constrained (an input triangle would
+  // go).
   bool star_of_region(const Tet_id* region, std::size_t region_size, Vertex_id c,
-                      std::vector<std::array<Vertex_id, 4>>& made) const
+                      std::vector<std::array<Vertex_id, 4>>& made, std::vector<Vertex_id>& inside,
+                      std::vector<Vertex_id>& on_boundary) const
   {
     const Flat_storage& m = cm_.mesh;
     made.clear();
+    inside.clear();
+    on_boundary.clear();
     for(std::size_t k = 0; k < region_size; ++k) {
       const Vertex_id* sv = m.vertex_ids(region[k]);
+      inside.insert(inside.end(), sv, sv + 4);
       for(int f = 0; f < 4; ++f) {
         const Tet_id u = m.neighbor(region[k], f);
         if(std::find(region, region + region_size, u) != region + region_size) {
@@ -1060,15 +1096,24 @@ private:
         std::array<Vertex_id, 4> q = {sv[0], sv[1], sv[2], sv[3]};
         q[f] = c;
         made.push_back(q);
+        for(int i = 0; i < 3; ++i) on_boundary.push_back(sv[facet_vertex[f][i]]);
       }
     }
-    return true;
+    std::sort(inside.begin(), inside.end());
+    inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
+    std::sort(on_boundary.begin(), on_boundary.end());
+    on_boundary.erase(std::unique(on_boundary.begin(), on_boundary.end()), on_boundary.end());
+    return inside.size() == on_boundary.size(); // on_boundary is a subset of inside
   }
 
-  // The best split of an interior edge or facet of t by a new vertex, if it
-  // raises the worst gamma of the region it replaces.  The new vertex is
-  // interior (no constrained facet is in the region's inside), gets the
-  // mean size of the split simplex's vertices, and may be relocated later.
+  // The best split of an interior edge or facet of t by a new vertex, or
+  // the best cavity around one of its facets' regular apexes, if it raises
+  // the worst gamma of the region it replaces.  The new vertex is interior
+  // (no constrained facet is in the region's inside), gets the mean size of
+  // the split simplex's vertices (of t's, for a cavity), and may be
+  // relocated later.  Only the sequential step comes here (a new vertex
+  // grows arrays the partitions share), so the ownership tests below
+  // always pass there; they keep the code right if that changes.
   Outcome add_steiner_point(Worker& w, Tet_id t)
   {
     Flat_storage& m = cm_.mesh;
@@ -1161,7 +1206,9 @@ private:
             region[region_size++] = u;
         }
       }
-      if(region_size < 2 || !star_of_region(region, region_size, c, w.made)) continue;
+      // t alone would be a 1-4 split of t from inside it, which cannot
+      // make a sliver's four corners into good tetrahedra.
+      if(region_size < 2 || !star_of_region(region, region_size, c, w.made, w.inside, w.on_boundary)) continue;
       double size = 0;
       for(int i = 0; i < 4; ++i) size += cm_.size[tv[i]] / 4;
       consider_split(w, c, region, region_size, apex, size, best);
@@ -1170,8 +1217,8 @@ private:
       if(!foreign) no_split_helped_.insert(std::upper_bound(no_split_helped_.begin(), no_split_helped_.end(), key), key);
       return foreign ? Outcome::foreign : Outcome::unchanged;
     }
-    if(!ball_positive(best.made, c, best.point) || w.slots_left() + best.region_size < best.made.size())
-      return Outcome::unchanged;
+    if(!ball_positive(best.made, c, best.point)) return Outcome::unchanged;
+    if(w.slots_left() + best.region_size < best.made.size()) grow_fresh_range(w, best.made.size());
     Vertex_record record;
     std::copy(best.point, best.point + 3, record.xyz);
     record.scratch = 0;
