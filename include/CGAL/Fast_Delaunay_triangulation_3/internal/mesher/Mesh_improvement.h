@@ -1154,18 +1154,11 @@ private:
         continue;
       }
       // Each tetrahedron of the pair gives three, c in place of one of the
-      // facet's corners in turn.
-      w.made.clear();
-      for(int side = 0; side < 2; ++side) {
-        const Vertex_id* sv = side == 0 ? tv : uv;
-        const int apex = side == 0 ? f : g;
-        for(int k = 0; k < 4; ++k) {
-          if(k == apex) continue;
-          std::array<Vertex_id, 4> q = {sv[0], sv[1], sv[2], sv[3]};
-          q[k] = c;
-          w.made.push_back(q);
-        }
-      }
+      // facet's corners in turn: the cone over the pair's six outer facets.
+      const Tet_id region[2] = {t, u};
+      const bool cone = star_of_region(region, 2, c, w.made, w.inside, w.on_boundary);
+      CGAL_assertion(cone); // the shared facet is not constrained, and all five vertices are outer
+      (void)cone;
       double centroid[3] = {0, 0, 0};
       double size = 0;
       for(int i = 0; i < 3; ++i) {
@@ -1173,7 +1166,6 @@ private:
         for(int a = 0; a < 3; ++a) centroid[a] += m.point(x)[a] / 3;
         size += cm_.size[x] / 3;
       }
-      const Tet_id region[2] = {t, u};
       consider_split(w, c, region, 2, centroid, size, best);
     }
     // A vertex where a facet of t would have its regular apex (on t's
@@ -1185,6 +1177,8 @@ private:
     // of them takes the new vertex deep enough; the cavity reaches the
     // tetrahedra behind them.  (Elephant, 1 thread: 69 tetrahedra left
     // under gamma 0.3 without it, 11 with it; fandisk 4 and 0.)
+    double corners_size = 0;
+    for(int i = 0; i < 4; ++i) corners_size += cm_.size[tv[i]] / 4;
     for(int f = 0; f < 4; ++f) {
       double apex[3];
       regular_apex(tv, f, apex);
@@ -1209,9 +1203,7 @@ private:
       // t alone would be a 1-4 split of t from inside it, which cannot
       // make a sliver's four corners into good tetrahedra.
       if(region_size < 2 || !star_of_region(region, region_size, c, w.made, w.inside, w.on_boundary)) continue;
-      double size = 0;
-      for(int i = 0; i < 4; ++i) size += cm_.size[tv[i]] / 4;
-      consider_split(w, c, region, region_size, apex, size, best);
+      consider_split(w, c, region, region_size, apex, corners_size, best);
     }
     if(best.gain <= 0) {
       if(!foreign) no_split_helped_.insert(std::upper_bound(no_split_helped_.begin(), no_split_helped_.end(), key), key);
