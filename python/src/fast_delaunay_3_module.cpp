@@ -681,11 +681,12 @@ py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py
 // improve_mesh(points, tets, subdomains, triangles, ...): the mesher's
 // improvement on a mesh of the caller's; (points, tets, subdomains, statistics).
 py::tuple improve_mesh(const py::handle& points, const py::handle& tets, const py::object& subdomains,
-                       const py::object& triangles, double quality_threshold, const py::object& threads,
-                       bool add_points, int passes)
+                       const py::object& triangles, double quality_threshold, double min_dihedral_target,
+                       const py::object& threads, bool add_points, int passes)
 {
   CGAL::Fast_mesher_3::Mesher_options options;
   options.quality_threshold = quality_threshold;
+  options.min_dihedral_target = min_dihedral_target;
   options.threads = thread_count(threads);
   options.improvement_adds_points = add_points;
   if(passes < 1) throw py::value_error("improve_mesh: passes must be at least 1, got " + std::to_string(passes));
@@ -838,8 +839,9 @@ one's H); a malformed line raises ValueError naming it.  A surface that is not c
 manifold and free of self-intersections raises ValueError naming the
 triangles.)");
   m.def("improve_mesh", &improve_mesh, py::arg("points"), py::arg("tets"), py::arg("subdomains") = py::none(),
-        py::arg("triangles") = py::none(), py::arg("quality_threshold") = 0.3, py::arg("threads") = py::none(),
-        py::arg("add_points") = true, py::arg("passes") = 10,
+        py::arg("triangles") = py::none(), py::arg("quality_threshold") = 0.3,
+        py::arg("min_dihedral_target") = CGAL::Fast_mesher_3::Mesher_options().min_dihedral_target,
+        py::arg("threads") = py::none(), py::arg("add_points") = true, py::arg("passes") = 10,
         R"(The mesher's improvement on a tetrahedral mesh of your own.
 
 points (n, 3); tets (m, 4) indices into points, positively oriented;
@@ -847,7 +849,8 @@ subdomains (m,) integers from 1 (default: all 1); triangles (t, 3) facets to
 keep besides the boundary and the facets between subdomains.  Flips, edge
 removal, smoothing of interior points and (add_points) interior Steiner
 points raise the quality gamma = 3 r_in / r_circ of the tetrahedra under
-quality_threshold; the boundary, the listed triangles and the subdomain
+quality_threshold and the smallest dihedral angle of those under
+min_dihedral_target degrees (0: gamma alone); the boundary, the listed triangles and the subdomain
 interfaces stay exactly as given, their points do not move.  Returns
 (points, tets, subdomains, statistics): the given points first (interior
 ones possibly moved), then the added ones; statistics a dict (bad_before,

@@ -232,3 +232,33 @@ def test_a_size_callable_refines_where_it_is_small_and_its_errors_arrive():
         fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=lambda x, y, z: -1.0)
     with pytest.raises(ValueError, match="not a number"):
         fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=lambda x, y, z: "small")
+
+
+def smallest_dihedral_degrees(points, tets):
+    """Each tetrahedron's smallest dihedral angle, from its facets' normals."""
+    p = points[tets]
+    faces = [(1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1)]  # opposite corner 0..3, outward for a positive tetrahedron
+    normals = [np.cross(p[:, b] - p[:, a], p[:, c] - p[:, a]) for a, b, c in faces]
+    normals = [n / np.linalg.norm(n, axis=1)[:, None] for n in normals]
+    cosines = [-(normals[i] * normals[j]).sum(axis=1) for i in range(4) for j in range(i + 1, 4)]
+    return np.degrees(np.arccos(np.clip(np.max(cosines, axis=0), -1, 1)))
+
+
+def test_improve_mesh_reaches_a_dihedral_target_and_refuses_one_out_of_range():
+    path = os.path.join(os.environ.get("FDT3_CGAL_DATA_DIR", ""), "elephant.off")
+    if not os.path.exists(path):
+        pytest.skip(f"{path} is missing (apt install libcgal-demo, re-run CMake)")
+    points, tets, subdomains = fast_delaunay_3.mesh_files([path], threads=1, optimize=False)
+    by_gamma = fast_delaunay_3.improve_mesh(points, tets, subdomains, min_dihedral_target=0, threads=1)
+    by_angle = fast_delaunay_3.improve_mesh(points, tets, subdomains, min_dihedral_target=20, threads=1)
+    gamma_alone = smallest_dihedral_degrees(by_gamma[0], by_gamma[1])
+    with_target = smallest_dihedral_degrees(by_angle[0], by_angle[1])
+    stats = by_angle[3]
+    # Under the target: at most the few left under gamma 0.3 (the statistics count gamma).
+    assert stats["bad_after"] == (gamma(by_angle[0], by_angle[1]) < 0.3).sum()
+    assert (with_target < 20 - 1e-9).sum() <= stats["bad_after"] <= 3
+    assert (gamma_alone < 20).sum() > 100
+    assert stats["min_dihedral_after"] == pytest.approx(with_target.min(), abs=1e-9)
+    for bad in (-1, 71, float("nan")):
+        with pytest.raises(ValueError, match=r"min_dihedral_target must be in \[0, 70\] degrees"):
+            fast_delaunay_3.improve_mesh(points, tets, subdomains, min_dihedral_target=bad)

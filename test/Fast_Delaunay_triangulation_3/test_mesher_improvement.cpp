@@ -322,8 +322,10 @@ TEST(Improvement, SteinerCavitiesUnderNearlyFlatSurfaceEdges)
   const Quality_report q = quality_report(mesh);
   EXPECT_GT(stats.improvement.steiner_points, 0u);
   EXPECT_EQ(stats.improvement.bad_after, q.tetrahedra_below_gamma_0_3);
-  EXPECT_LE(q.tetrahedra_below_gamma_0_3, 30u);
-  EXPECT_GT(q.min_gamma, 0.18);
+  // Cavities grown by spheres alone leave 11 under 0.3 (worst 0.219);
+  // with those grown until the new point sees their boundary well, 1.
+  EXPECT_LE(q.tetrahedra_below_gamma_0_3, 3u);
+  EXPECT_GT(q.min_gamma, 0.25);
   EXPECT_TRUE(q.boundary_equals_input());
   EXPECT_EQ(q.inverted_tetrahedra, 0u);
   mesher_checks::expect_all_positive(mesh);
@@ -336,6 +338,66 @@ CGAL::Fast_mesher_3::Tetrahedral_mesh unimproved_mesh(const mesher_shapes::Surfa
   CGAL::Fast_mesher_3::Mesher_options off;
   off.optimize = false;
   return CGAL::Fast_mesher_3::mesh_surfaces(s.points, s.triangles, off);
+}
+
+// A tetrahedron can have gamma above the threshold and a small dihedral
+// angle; the target makes those bad too.  On this torus gamma alone ends
+// at 10.3 degrees.
+TEST(Improvement, DihedralTargetLiftsTheSmallestAngle)
+{
+  using namespace CGAL::Fast_mesher_3;
+  const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 40, 16);
+  const Tetrahedral_mesh plain = unimproved_mesh(s);
+  Mesher_options gamma_alone, target;
+  gamma_alone.min_dihedral_target = 0;
+  target.min_dihedral_target = 20;
+  Tetrahedral_mesh by_gamma = plain, by_angle = plain;
+  improve_mesh(by_gamma, gamma_alone);
+  const Improvement_statistics stats = improve_mesh(by_angle, target);
+  const Quality_report q_gamma = quality_report(by_gamma), q = quality_report(by_angle);
+  EXPECT_LT(q_gamma.min_dihedral_degrees, 15.0);
+  EXPECT_GE(q.min_dihedral_degrees, 20.0 - 1e-9);
+  EXPECT_NEAR(stats.min_dihedral_after, q.min_dihedral_degrees, 1e-9);
+  // The statistics still count gamma.
+  EXPECT_EQ(stats.bad_after, q.tetrahedra_below_gamma_0_3);
+  EXPECT_EQ(q.tetrahedra_below_gamma_0_3, 0u);
+  EXPECT_EQ(q.inverted_tetrahedra, 0u);
+  EXPECT_TRUE(q.boundary_equals_input());
+  mesher_checks::expect_all_positive(by_angle);
+  mesher_checks::expect_boundary_is_input(by_angle, s);
+  EXPECT_NEAR(mesher_checks::volume_of_subdomain(by_angle, 1), mesher_checks::volume_of_subdomain(plain, 1),
+              1e-9 * mesher_checks::volume_of_subdomain(plain, 1));
+}
+
+// A target out of range is refused by name before anything is read or changed.
+TEST(Improvement, TargetsOutOfRangeAreRefused)
+{
+  using namespace CGAL::Fast_mesher_3;
+  const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 20, 8);
+  const Tetrahedral_mesh plain = unimproved_mesh(s);
+  for(double bad : {-1.0, 71.0, std::numeric_limits<double>::quiet_NaN()}) {
+    Mesher_options o;
+    o.min_dihedral_target = bad;
+    Tetrahedral_mesh m = plain;
+    try {
+      improve_mesh(m, o);
+      ADD_FAILURE() << "improve_mesh accepted min_dihedral_target " << bad;
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("improve_mesh: min_dihedral_target must be in [0, 70] degrees"),
+                std::string::npos)
+          << e.what();
+    }
+    EXPECT_TRUE(m.points == plain.points && m.tetrahedra == plain.tetrahedra);
+    try {
+      mesh_surfaces(s.points, s.triangles, o);
+      ADD_FAILURE() << "mesh_surfaces accepted min_dihedral_target " << bad;
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("min_dihedral_target"), std::string::npos) << e.what();
+    }
+  }
+  Mesher_options o;
+  o.quality_threshold = 0;
+  EXPECT_THROW(mesh_surfaces(s.points, s.triangles, o), std::invalid_argument);
 }
 
 // The public function on a mesh of one's own: here the mesher's, unimproved.

@@ -2,11 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // fast_mesh_3 INPUT... -o OUTPUT [--size H] [--size-field FILE] [--threads K]
-//             [--optimize 0|1] [--quality-threshold G] [--quiet]
+//             [--optimize 0|1] [--quality-threshold G] [--dihedral-target D] [--quiet]
 //
 // Meshes the volumes bounded by the closed surfaces of the input files (OFF,
 // STL, OBJ, PLY) with the Delaunay-refinement mesher of the paper's §4,
-// improves the tetrahedra under the gamma threshold (unless --optimize 0)
+// improves the tetrahedra under the gamma threshold or the dihedral target
+// (unless --optimize 0)
 // and writes OUTPUT as Medit (.mesh), VTK (.vtu) or Gmsh 4.1 (.msh), by
 // extension.
 // Prints the phases' times, a progress line per refinement pass (one line
@@ -29,7 +30,7 @@ int usage(const char* program)
 {
   std::cerr << "usage: " << program
             << " INPUT... -o OUTPUT [--size H] [--size-field FILE] [--threads K] [--optimize 0|1]\n"
-            << "       [--quality-threshold G] [--quiet]\n"
+            << "       [--quality-threshold G] [--dihedral-target D] [--quiet]\n"
             << "  INPUT   closed triangulated surfaces (.off .stl .obj .ply); nested surfaces give several subdomains\n"
             << "  OUTPUT  .mesh (Medit), .vtu (VTK) or .msh (Gmsh 4.1)\n"
             << "  --size H     maximum mesh size (default: the surface's edge lengths, interpolated)\n"
@@ -40,6 +41,8 @@ int usage(const char* program)
             << "               the same input and K give the same mesh\n"
             << "  --optimize 0|1  improve the tetrahedra under the threshold after refinement (default 1)\n"
             << "  --quality-threshold G  gamma = 3 r_in / r_circ to reach, in (0, 1) (default 0.3)\n"
+            << "  --dihedral-target D    smallest dihedral angle to reach, degrees in [0, 70] (default 15;\n"
+            << "                         0: gamma alone)\n"
             << "  --quiet      print nothing but errors\n";
   return 2;
 }
@@ -71,6 +74,7 @@ int main(int argc, char** argv)
         if(v != "0" && v != "1") throw std::invalid_argument(v);
         options.optimize = v == "1";
       } else if(arg == "--quality-threshold") options.quality_threshold = std::stod(value());
+      else if(arg == "--dihedral-target") options.min_dihedral_target = std::stod(value());
       else if(arg == "--quiet") quiet = true;
       else if(arg == "-h" || arg == "--help") return usage(argv[0]);
       else if(!arg.empty() && arg[0] == '-') {
@@ -84,8 +88,10 @@ int main(int argc, char** argv)
   }
   if(inputs.empty() || output.empty()) return usage(argv[0]);
   if(!(options.maximum_size > 0) || options.threads < 1 ||
-     !(options.quality_threshold > 0 && options.quality_threshold < 1)) {
-    std::cerr << "fast_mesh_3: --size must be positive, --threads at least 1 and --quality-threshold in (0, 1)\n";
+     !(options.quality_threshold > 0 && options.quality_threshold < 1) ||
+     !(options.min_dihedral_target >= 0 && options.min_dihedral_target <= 70)) {
+    std::cerr << "fast_mesh_3: --size must be positive, --threads at least 1, --quality-threshold in (0, 1) and "
+                 "--dihedral-target in [0, 70]\n";
     return 2;
   }
   if(!size_field.empty()) {

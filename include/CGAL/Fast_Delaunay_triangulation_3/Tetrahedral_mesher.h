@@ -100,6 +100,10 @@ struct Mesher_options
   // partitions as refinement.  Off: the refined Delaunay mesh.
   bool optimize = true;
   double quality_threshold = 0.3;
+  // Degrees: a tetrahedron whose smallest dihedral angle is under this is
+  // improved too, as if its gamma were under quality_threshold; 0 for
+  // gamma alone.
+  double min_dihedral_target = 15;
   int max_improvement_passes = 10;
   bool improvement_adds_points = true; // off: the improvement keeps the refined mesh's points
   // Called after each refinement pass with (pass number, points inserted,
@@ -139,6 +143,26 @@ using namespace Fast_Delaunay_triangulation_3_internal::mesher;
 inline double seconds_since(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The improvement's options from the mesher's.  Throws
+// std::invalid_argument, prefixed with `caller`, for a target out of range;
+// called before anything is read or changed.
+inline Improvement_options improvement_options_of(const Mesher_options& options, const std::string& caller)
+{
+  if(!(options.quality_threshold > 0 && options.quality_threshold <= 1))
+    throw std::invalid_argument(caller + ": quality_threshold must be in (0, 1]");
+  // The regular tetrahedron's dihedral angles, 70.53 degrees, are the
+  // largest smallest angle a tetrahedron can have.
+  if(!(options.min_dihedral_target >= 0 && options.min_dihedral_target <= 70))
+    throw std::invalid_argument(caller + ": min_dihedral_target must be in [0, 70] degrees");
+  Improvement_options improvement;
+  improvement.quality_threshold = options.quality_threshold;
+  improvement.min_dihedral_target = options.min_dihedral_target;
+  improvement.max_passes = options.max_improvement_passes;
+  improvement.add_steiner_points = options.improvement_adds_points;
+  improvement.threads = std::max(1, options.threads);
+  return improvement;
 }
 
 // The user's bounds of h, at the unit scale of `scaling`.
@@ -225,12 +249,7 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
   stats.refinement_seconds = seconds_since(t1);
   cm.size.rethrow_user_error();
   if(options.optimize) {
-    Improvement_options improvement;
-    improvement.quality_threshold = options.quality_threshold;
-    improvement.max_passes = options.max_improvement_passes;
-    improvement.add_steiner_points = options.improvement_adds_points;
-    improvement.threads = std::max(1, options.threads);
-    stats.improvement = improve_mesh(cm, improvement);
+    stats.improvement = improve_mesh(cm, improvement_options_of(options, "Tetrahedral_mesher"));
     stats.improvement_seconds = stats.improvement.seconds;
     cm.size.rethrow_user_error();
   }
@@ -247,6 +266,7 @@ Tetrahedral_mesh read_and_mesh(Read_soup read_soup, const Mesher_options& option
                                On_mesh on_mesh)
 {
   const auto t0 = std::chrono::steady_clock::now();
+  if(options.optimize) improvement_options_of(options, "Tetrahedral_mesher"); // refuses bad targets up front
   Surface_soup soup = read_soup();
   const Unit_scaling scaling(soup);
   scaling.scale(soup);
@@ -423,8 +443,7 @@ inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const 
 inline Improvement_statistics improve_mesh(Tetrahedral_mesh& mesh, const Mesher_options& options = Mesher_options())
 {
   using namespace mesher_detail;
-  if(!(options.quality_threshold > 0 && options.quality_threshold <= 1))
-    refuse_mesh("quality_threshold must be in (0, 1]");
+  const Improvement_options improvement = improvement_options_of(options, "improve_mesh");
   for(std::size_t i = 0; i < mesh.points.size(); ++i)
     for(double x : mesh.points[i])
       if(!std::isfinite(x)) refuse_mesh("point #" + std::to_string(i) + " has a coordinate that is not finite");
@@ -432,12 +451,8 @@ inline Improvement_statistics improve_mesh(Tetrahedral_mesh& mesh, const Mesher_
   extent.points = mesh.points;
   const Unit_scaling scaling(extent); // throws Invalid_surface (an invalid_argument) past a double's range
   Constrained_mesh cm = constrained_mesh_of(mesh, scaling);
-  Improvement_options improvement;
-  improvement.quality_threshold = options.quality_threshold;
-  improvement.max_passes = options.max_improvement_passes;
-  improvement.threads = std::max(1, options.threads);
-  improvement.add_steiner_points = options.improvement_adds_points;
-  const Improvement_statistics stats = Fast_Delaunay_triangulation_3_internal::mesher::improve_mesh(cm, improvement);
+  const Improvement_statistics stats =
+      Fast_Delaunay_triangulation_3_internal::mesher::improve_mesh(cm, improvement);
   scaling.unscale(cm);
   const Flat_storage& m = cm.mesh;
   Tetrahedral_mesh out;

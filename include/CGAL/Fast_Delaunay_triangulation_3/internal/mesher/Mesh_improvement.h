@@ -3,16 +3,18 @@
 //
 // Mesh improvement: the step the paper leaves out (§4 and its conclusion:
 // "edge swap, edge collapse, edge split, vertex relocation and face swap ...
-// using the same parallel framework").  Every tetrahedron whose gamma
-// (Tetrahedron_quality.h) is under the threshold is worked on, worst first,
-// by local operations that each must raise the worst gamma of the region
+// using the same parallel framework").  A tetrahedron's quality is its
+// gamma (Tetrahedron_quality.h) or, with a dihedral target, the lower of
+// gamma and threshold * sin(smallest dihedral angle) / sin(target); every
+// tetrahedron of quality under the threshold is worked on, worst first, by
+// local operations that each must raise the worst quality of the region
 // they touch:
 //
 //   edge removal   the ring of n = 3..max_ring tetrahedra around one of its
 //                  edges is replaced by the 2n - 4 tetrahedra of the best
 //                  triangulation of the ring's polygon (Shewchuk's edge
 //                  removal; n = 3 is the 3-2 flip, n = 4 the 4-4 flip): the
-//                  polygon triangulation maximising the worst gamma, by
+//                  polygon triangulation maximising the worst quality, by
 //                  dynamic programming over its diagonals (Klincsek);
 //   face removal   the 2-3 flip of one of its facets;
 //   relocation     each of its vertices that is not on the surface moves
@@ -20,18 +22,20 @@
 //                  each tetrahedron of its ball regular, or toward the
 //                  worst one's alone, or (only if it does better) toward the
 //                  mean of its neighbours, halving the step until the worst
-//                  gamma of the ball goes up;
+//                  quality of the ball goes up;
 //   Steiner point  where none of these helps (typically a sliver whose four
 //                  vertices are on the surface, which relocation cannot
 //                  move), a new interior vertex splits one of its interior
 //                  edges (the edge's ring becomes twice as many tetrahedra)
 //                  or one of its interior facets (two tetrahedra become
 //                  six), or is put at the regular apex of one of its
-//                  facets and joined to the boundary of the cavity of the
-//                  tetrahedra whose circumscribed spheres hold it (up to
-//                  max_steiner_region of them, never across a constrained
-//                  facet); placed by the same search as relocation, and kept
-//                  only if the region's worst gamma goes up.
+//                  facets and joined to the boundary of a cavity grown from
+//                  it: the tetrahedra whose circumscribed spheres hold the
+//                  point, or those behind every boundary facet the point
+//                  would make a bad tetrahedron with (up to
+//                  max_steiner_region, never across a constrained facet);
+//                  placed by the same search as relocation, and kept only
+//                  if the region's worst quality goes up.
 //
 // What every operation keeps: positive orientation, checked with the exact
 // predicate before anything is written; the input triangles (a constrained
@@ -79,6 +83,10 @@ namespace mesher {
 struct Improvement_options
 {
   double quality_threshold = 0.3; // gamma under which a tetrahedron is worked on
+  // Degrees: a tetrahedron whose smallest dihedral angle is under this is
+  // worked on too, with the quality min(gamma, quality_threshold *
+  // sin(angle) / sin(min_dihedral_target)); 0 for gamma alone.
+  double min_dihedral_target = 0;
   int max_passes = 10;            // sweeps over the bad tetrahedra
   int threads = 1;                // partitions; the result depends on this number only
   std::size_t min_bad_per_partition = 256;
@@ -122,6 +130,8 @@ public:
   Mesh_improvement(Constrained_mesh& cm, const Improvement_options& options) : cm_(cm), options_(options)
   {
     options_.max_ring = std::max(3, std::min(options_.max_ring, max_ring_limit));
+    const double target = std::min(options_.min_dihedral_target, 70.0);
+    if(target > 0) dihedral_scale_ = options_.quality_threshold / std::sin(target * 3.14159265358979323846 / 180);
   }
 
   Improvement_statistics run()
@@ -132,9 +142,9 @@ public:
     mark_surface_vertices();
     set_incident_tetrahedra();
     partition_of_vertex_.assign(cm_.mesh.vertices.size(), 0);
-    std::vector<Bad_tet> bad = bad_tetrahedra(stats.min_gamma_before);
-    stats.bad_before = bad.size();
-    dihedral_figures(stats.min_dihedral_before, stats.below_10_degrees_before);
+    std::vector<Bad_tet> bad;
+    shape_figures(stats.min_gamma_before, stats.bad_before, stats.min_dihedral_before, stats.below_10_degrees_before,
+                  &bad);
     // Steiner points come only once flips and relocation have done what
     // they can: a split made early takes the place of a better flip (on 60
     // points of a sphere, splitting first left a worst gamma of 0.009,
@@ -155,11 +165,11 @@ public:
         if(operations(stats) == changes) break;
       }
     }
-    if(stats.passes == 0) stats.min_gamma_after = stats.min_gamma_before;
-    else bad_tetrahedra(stats.min_gamma_after);
-    stats.bad_after = bad.size();
-    dihedral_figures(stats.min_dihedral_after, stats.below_10_degrees_after);
+    shape_figures(stats.min_gamma_after, stats.bad_after, stats.min_dihedral_after, stats.below_10_degrees_after);
+    // The statistics count gamma: a tetrahedron under the threshold is on
+    // the work list whatever the dihedral target.
     for(const Bad_tet& b : bad) {
+      if(gamma_of(b.t) >= options_.quality_threshold) continue;
       const Vertex_id* tv = cm_.mesh.vertex_ids(b.t);
       if(!(on_surface_[tv[0]] && on_surface_[tv[1]] && on_surface_[tv[2]] && on_surface_[tv[3]])) continue;
       ++stats.bad_after_on_surface;
@@ -190,11 +200,11 @@ private:
 
   struct Bad_tet
   {
-    double gamma;
+    double quality;
     Tet_id t;
     friend bool operator<(const Bad_tet& x, const Bad_tet& y)
     {
-      return x.gamma != y.gamma ? x.gamma < y.gamma : x.t < y.t;
+      return x.quality != y.quality ? x.quality < y.quality : x.t < y.t;
     }
   };
 
@@ -267,38 +277,36 @@ private:
     return cm_.mesh.is_live(t) && !cm_.mesh.is_ghost(t) && cm_.subdomain[t] > 0;
   }
 
-  double gamma_of(const Vertex_id* tv) const
+  // What the operations raise: gamma, or with a dihedral target the lower
+  // of gamma and the scaled sine of the smallest dihedral angle (a
+  // tetrahedron can have gamma well above 0.3 and an angle of 11 degrees).
+  double quality(const double* a, const double* b, const double* c, const double* d) const
   {
+    if(dihedral_scale_ == 0) return gamma_quality(a, b, c, d);
+    double sine;
+    const double gamma = gamma_quality(a, b, c, d, &sine);
+    return quality_of_shape(gamma, sine);
+  }
+  // From gamma and the sine of the smallest dihedral angle.
+  double quality_of_shape(double gamma, double sine) const
+  {
+    return dihedral_scale_ == 0 ? gamma : std::min(gamma, dihedral_scale_ * sine);
+  }
+  double gamma_of(Tet_id t) const
+  {
+    const Vertex_id* tv = cm_.mesh.vertex_ids(t);
     const Flat_storage& m = cm_.mesh;
     return gamma_quality(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]));
   }
-  double gamma_of(Tet_id t) const { return gamma_of(cm_.mesh.vertex_ids(t)); }
-
-  // The tetrahedra under the threshold, in slot order; `smallest` gets the
-  // lowest gamma of all the volumes' tetrahedra.
-  std::vector<Bad_tet> bad_tetrahedra(double& smallest) const
+  double quality_of(const Vertex_id* tv) const
   {
-    const std::size_t slots = cm_.mesh.number_of_slots();
-    const int chunks = chunk_count(slots, std::max(1, options_.threads));
-    std::vector<std::vector<Bad_tet>> found(chunks);
-    std::vector<double> lowest(chunks, 1.0);
-    for_each_chunk(chunks, [&](int c) {
-      const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
-      for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
-        if(!is_volume(t)) continue;
-        const double g = gamma_of(t);
-        lowest[c] = std::min(lowest[c], g);
-        if(g < options_.quality_threshold) found[c].push_back({g, t});
-      }
-    });
-    std::vector<Bad_tet> bad;
-    for(const auto& run : found) bad.insert(bad.end(), run.begin(), run.end());
-    smallest = *std::min_element(lowest.begin(), lowest.end());
-    return bad;
+    const Flat_storage& m = cm_.mesh;
+    return quality(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]));
   }
+  double quality_of(Tet_id t) const { return quality_of(cm_.mesh.vertex_ids(t)); }
 
-  // The same after a pass, from the list before it: only a tetrahedron
-  // with a changed vertex (changed_) can have changed its gamma, so the
+  // The tetrahedra of quality under the threshold after a pass, from the list before it: only a tetrahedron
+  // with a changed vertex (changed_) can have changed its quality, so the
   // others keep their place in or out of the list, and only those are
   // measured (a pass late in the improvement changes a few hundred of a
   // million tetrahedra).  In slot order too.
@@ -316,7 +324,7 @@ private:
       const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
       for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
         if(!is_volume(t) || !changed(t)) continue;
-        const double g = gamma_of(t);
+        const double g = quality_of(t);
         if(g < options_.quality_threshold) found[c].push_back({g, t});
       }
     });
@@ -328,30 +336,43 @@ private:
     return bad;
   }
 
-  void dihedral_figures(double& smallest, std::size_t& below_10_degrees) const
+  // Over the volumes' tetrahedra: the lowest gamma, how many are under the
+  // threshold, the smallest dihedral angle and how many are under 10
+  // degrees; in `bad`, if given, the tetrahedra of quality under the
+  // threshold (the work list), in slot order.
+  void shape_figures(double& lowest_gamma, std::size_t& under_threshold, double& smallest_angle,
+                     std::size_t& below_10_degrees, std::vector<Bad_tet>* bad = nullptr) const
   {
     const Flat_storage& m = cm_.mesh;
     const std::size_t slots = m.number_of_slots();
     const int chunks = chunk_count(slots, std::max(1, options_.threads));
-    std::vector<double> lowest(chunks, 180);
-    std::vector<std::size_t> below(chunks, 0);
+    std::vector<double> lowest(chunks, 1.0), smallest(chunks, 180);
+    std::vector<std::size_t> under(chunks, 0), below(chunks, 0);
+    std::vector<std::vector<Bad_tet>> found(chunks);
     for_each_chunk(chunks, [&](int c) {
       const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
       for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
         if(!is_volume(t)) continue;
         const Vertex_id* tv = m.vertex_ids(t);
-        const double* w[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
-        double highest_cosine = -1;
-        for(const auto& e : dihedral_edges)
-          highest_cosine = std::max(highest_cosine, dihedral_cosine(w[e[0]], w[e[1]], w[e[2]], w[e[3]]));
-        const double angle = degrees_of_cosine(highest_cosine);
-        lowest[c] = std::min(lowest[c], angle);
+        double sine; // of the smallest angle, at most 70.5 degrees
+        const double g = gamma_quality(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), &sine);
+        lowest[c] = std::min(lowest[c], g);
+        under[c] += g < options_.quality_threshold ? 1 : 0;
+        const double q = quality_of_shape(g, sine);
+        if(bad && q < options_.quality_threshold) found[c].push_back({q, t});
+        const double angle = std::asin(std::min(1.0, sine)) * 180 / 3.14159265358979323846;
+        smallest[c] = std::min(smallest[c], angle);
         below[c] += angle < 10 ? 1 : 0;
       }
     });
-    smallest = *std::min_element(lowest.begin(), lowest.end());
-    below_10_degrees = 0;
-    for(std::size_t n : below) below_10_degrees += n;
+    lowest_gamma = *std::min_element(lowest.begin(), lowest.end());
+    smallest_angle = *std::min_element(smallest.begin(), smallest.end());
+    under_threshold = below_10_degrees = 0;
+    for(int c = 0; c < chunks; ++c) {
+      under_threshold += under[c];
+      below_10_degrees += below[c];
+      if(bad) bad->insert(bad->end(), found[c].begin(), found[c].end());
+    }
   }
 
   bool on_skinny_input_triangle(Tet_id t) const
@@ -492,7 +513,7 @@ private:
       w.may_add_vertices = partitions == 1;
       std::vector<Bad_tet> order;
       for(Tet_id t : lists[j])
-        if(is_volume(t)) order.push_back({gamma_of(t), t});
+        if(is_volume(t)) order.push_back({quality_of(t), t});
       std::sort(order.begin(), order.end());
       for(const Bad_tet& b : order) improve_tetrahedron(w, b.t);
     });
@@ -541,7 +562,7 @@ private:
   // ------------------------------------------------------------ one bad tetrahedron
   void improve_tetrahedron(Worker& w, Tet_id t)
   {
-    if(!is_volume(t) || gamma_of(t) >= options_.quality_threshold) return;
+    if(!is_volume(t) || quality_of(t) >= options_.quality_threshold) return;
     if(!owned_by(t, w.partition)) {
       w.deferred.push_back(t);
       ++w.stats.deferred;
@@ -562,7 +583,7 @@ private:
         if(on_surface_[v]) continue;
         o = relocate(w, v);
         foreign |= o == Outcome::foreign;
-        if(!is_volume(t) || gamma_of(t) >= options_.quality_threshold) return;
+        if(!is_volume(t) || quality_of(t) >= options_.quality_threshold) return;
       }
     }
     if(!steiner_phase_) {
@@ -686,14 +707,17 @@ private:
     }
     if(r.n < 3 || x != r.ring[0]) return Outcome::unchanged;
     r.worst = 1;
-    for(int s = 0; s < r.n; ++s) r.worst = std::min(r.worst, gamma_of(r.tets[s]));
+    for(int s = 0; s < r.n; ++s) r.worst = std::min(r.worst, quality_of(r.tets[s]));
     return Outcome::found;
   }
 
   // Klincsek's dynamic programme over the ring polygon: best[i][j] is the
-  // largest worst gamma of a triangulation of ring[i..j], each triangle
+  // largest worst quality of a triangulation of ring[i..j], each triangle
   // (i, m, j) standing for the tetrahedra (a, i, m, j) and (i, m, j, b).
-  double best_ring_triangulation(const Edge_ring& r, int split[max_ring_limit][max_ring_limit]) const
+  // Only triangulations better than `floor` matter: a triangle whose
+  // sub-polygons or first tetrahedron are no better is not measured
+  // further, and the result is at most `floor` when none is better.
+  double best_ring_triangulation(const Edge_ring& r, int split[max_ring_limit][max_ring_limit], double floor) const
   {
     const Flat_storage& m = cm_.mesh;
     double best[max_ring_limit][max_ring_limit];
@@ -708,12 +732,15 @@ private:
         }
         best[i][j] = -std::numeric_limits<double>::infinity();
         for(int mid = i + 1; mid < j; ++mid) {
+          const double bar = std::max(best[i][j], floor);
           const double sub = std::min(best[i][mid], best[mid][j]);
-          if(sub <= best[i][j]) continue;
+          if(sub <= bar) continue;
           const double* pi = m.point(r.ring[i]);
           const double* pm = m.point(r.ring[mid]);
           const double* pj = m.point(r.ring[j]);
-          const double q = std::min({sub, gamma_quality(pa, pi, pm, pj), gamma_quality(pi, pm, pj, pb)});
+          const double above = std::min(sub, quality(pa, pi, pm, pj));
+          if(above <= bar) continue;
+          const double q = std::min(above, quality(pi, pm, pj, pb));
           if(q > best[i][j]) {
             best[i][j] = q;
             split[i][j] = mid;
@@ -744,7 +771,7 @@ private:
       const Outcome o = edge_ring(w, t, e[0], e[1], r, options_.max_ring);
       if(o == Outcome::foreign) foreign = true;
       if(o != Outcome::found) continue;
-      const double q = best_ring_triangulation(r, split);
+      const double q = best_ring_triangulation(r, split, r.worst + best_gain);
       if(q - r.worst > best_gain) {
         best_gain = q - r.worst;
         best_quality = q;
@@ -779,14 +806,14 @@ private:
         foreign = true;
         continue;
       }
-      const double worst = std::min(gamma_of(t), gamma_of(u));
+      const double worst = std::min(quality_of(t), quality_of(u));
       std::array<Vertex_id, 4> made[3];
       double quality = 1;
       for(int k = 0, c = 0; k < 4; ++k) {
         if(k == i) continue;
         for(int s = 0; s < 4; ++s) made[c][s] = tv[s];
         made[c][k] = q;
-        quality = std::min(quality, gamma_of(made[c].data()));
+        quality = std::min(quality, quality_of(made[c].data()));
         ++c;
       }
       if(quality > worst && quality > best_quality) {
@@ -834,7 +861,7 @@ private:
     return id == v ? p : cm_.mesh.point(id);
   }
 
-  // The worst gamma of `ball` with v at p (v's record is not changed), or
+  // The worst quality of `ball` with v at p (v's record is not changed), or
   // any value at most `enough` once it is known to be at most that: a
   // candidate position fails on its first tetrahedron no better than the
   // best so far, and the worst ones come first.
@@ -843,8 +870,8 @@ private:
   {
     double worst = 1;
     for(const auto& tv : ball) {
-      worst = std::min(worst, gamma_quality(corner(tv[0], v, p), corner(tv[1], v, p), corner(tv[2], v, p),
-                                            corner(tv[3], v, p)));
+      worst = std::min(worst, quality(corner(tv[0], v, p), corner(tv[1], v, p), corner(tv[2], v, p),
+                                      corner(tv[3], v, p)));
       if(worst <= enough) return worst;
     }
     return worst;
@@ -883,7 +910,7 @@ private:
     for(int a = 0; a < 3; ++a) out[a] = (x[a] + y[a] + z[a]) / 3 + height * n[a];
   }
 
-  // Orders `ball` by gamma with v at p, the worst first.
+  // Orders `ball` by quality with v at p, the worst first.
   void worst_first(std::vector<std::array<Vertex_id, 4>>& ball, Vertex_id v, const double* p) const
   {
     CGAL_assertion(ball.size() <= max_ball);
@@ -891,19 +918,18 @@ private:
     const std::size_t n = ball.size();
     for(std::size_t k = 0; k < n; ++k) {
       const auto& tv = ball[k];
-      keyed[k] = {gamma_quality(corner(tv[0], v, p), corner(tv[1], v, p), corner(tv[2], v, p), corner(tv[3], v, p)),
-                  tv};
+      keyed[k] = {quality(corner(tv[0], v, p), corner(tv[1], v, p), corner(tv[2], v, p), corner(tv[3], v, p)), tv};
     }
     std::sort(keyed, keyed + n);
     for(std::size_t k = 0; k < n; ++k) ball[k] = keyed[k].second;
   }
 
   // The search for v's position in `ball` (reordered), from `start`: toward the weighted
-  // mean of the regular apexes (weight 1 / gamma, so the bad tetrahedra pull
+  // mean of the regular apexes (weight 1 / quality, so the bad tetrahedra pull
   // hardest), toward the worst tetrahedron's apex, and (only if it does
   // better) toward the neighbours' mean (Laplacian), halving each step until
-  // the worst gamma goes up; each of `rounds` rounds starts where the last
-  // one ended.  Returns the worst gamma at `best` (start's if nothing helps).
+  // the worst quality goes up; each of `rounds` rounds starts where the last
+  // one ended.  Returns the worst quality at `best` (start's if nothing helps).
   double best_position(std::vector<std::array<Vertex_id, 4>>& ball, Vertex_id v, const double* start,
                        int rounds, double* best) const
   {
@@ -913,20 +939,20 @@ private:
     for(int round = 0; round < rounds; ++round) {
       const double here[3] = {best[0], best[1], best[2]};
       double targets[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-      double weight_sum = 0, worst_gamma = 2;
+      double weight_sum = 0, worst_quality = 2;
       std::size_t neighbours = 0;
       for(const auto& tv : ball) {
         int s = 0;
         while(tv[s] != v) ++s;
         double apex[3];
         regular_apex(tv.data(), s, apex);
-        const double g = gamma_quality(corner(tv[0], v, here), corner(tv[1], v, here), corner(tv[2], v, here),
-                                       corner(tv[3], v, here));
+        const double g = quality(corner(tv[0], v, here), corner(tv[1], v, here), corner(tv[2], v, here),
+                                 corner(tv[3], v, here));
         const double weight = 1 / std::max(g, 1e-3);
         for(int a = 0; a < 3; ++a) targets[0][a] += weight * apex[a];
         weight_sum += weight;
-        if(g < worst_gamma) {
-          worst_gamma = g;
+        if(g < worst_quality) {
+          worst_quality = g;
           std::copy(apex, apex + 3, targets[1]);
         }
         for(int i = 0; i < 4; ++i)
@@ -988,6 +1014,7 @@ private:
   struct Split
   {
     double gain = 0;
+    double quality = 0; // the worst of `made` with the new vertex at `point`
     double point[3];
     std::vector<std::array<Vertex_id, 4>> made;
     Tet_id region[max_steiner_region];
@@ -1000,7 +1027,7 @@ private:
   {
     std::size_t n = 0;
     for(const auto& tv : tets)
-      n += gamma_quality(corner(tv[0], c, p), corner(tv[1], c, p), corner(tv[2], c, p), corner(tv[3], c, p)) <
+      n += quality(corner(tv[0], c, p), corner(tv[1], c, p), corner(tv[2], c, p), corner(tv[3], c, p)) <
                    options_.quality_threshold
                ? 1
                : 0;
@@ -1023,9 +1050,22 @@ private:
     double worst = 1;
     std::size_t bad_in_region = 0;
     for(std::size_t k = 0; k < region_size; ++k) {
-      const double g = gamma_of(region[k]);
+      const double g = quality_of(region[k]);
       worst = std::min(worst, g);
       bad_in_region += g < options_.quality_threshold ? 1 : 0;
+    }
+    // No position of c makes a tetrahedron much better than the one with c
+    // at the regular apex of its facet opposite c: if the worst of those
+    // cannot beat the best split so far, the searches are not run.
+    double ceiling = 1;
+    for(const auto& tv : w.made) {
+      int s = 0;
+      while(tv[s] != c) ++s;
+      double apex[3];
+      regular_apex(tv.data(), s, apex);
+      ceiling = std::min(
+          ceiling, quality(corner(tv[0], c, apex), corner(tv[1], c, apex), corner(tv[2], c, apex), corner(tv[3], c, apex)));
+      if(ceiling - worst <= best.gain) return;
     }
     // Two starts: the given one (the split simplex's centre, or a facet's
     // regular apex), and halfway from it to the centre of the new
@@ -1045,17 +1085,21 @@ private:
     for(int a = 0; a < 3; ++a) inner[a] = (start[a] + centre[a] / double(corners)) / 2;
     double p[3], p_inner[3];
     double q = best_position(w.made, c, start, steiner_search_rounds, p);
-    const double q_inner = best_position(w.made, c, inner, steiner_search_rounds, p_inner);
-    if(q_inner > q) {
-      q = q_inner;
-      std::copy(p_inner, p_inner + 3, p);
+    if(q < options_.quality_threshold) {
+      const double q_inner = best_position(w.made, c, inner, steiner_search_rounds, p_inner);
+      if(q_inner > q) {
+        q = q_inner;
+        std::copy(p_inner, p_inner + 3, p);
+      }
     }
     // A true sliver (gamma under a quarter of the threshold) may go for
     // any number of tetrahedra at half the threshold or better (fandisk,
     // 2 threads: gamma 0.0006 for five at 0.21 or better).
-    const bool removes_a_sliver = worst < options_.quality_threshold / 4 && q >= options_.quality_threshold / 2;
+    const bool removes_a_sliver =
+        worst < options_.quality_threshold / 4 && q >= options_.quality_threshold / 2;
     if(q > 0 && q - worst > best.gain && (removes_a_sliver || bad_count(w.made, c, p) <= bad_in_region + 2)) {
       best.gain = q - worst;
+      best.quality = q;
       std::copy(p, p + 3, best.point);
       best.made = w.made;
       std::copy(region, region + region_size, best.region);
@@ -1106,9 +1150,47 @@ private:
     return inside.size() == on_boundary.size(); // on_boundary is a subset of inside
   }
 
+  // How a Steiner cavity grows from t across unconstrained facets of its
+  // subdomain: to the tetrahedra whose circumscribed spheres hold the new
+  // point (Bowyer-Watson), or across every boundary facet whose cone to
+  // the point would be under the threshold (the cavity a point needs to see
+  // its boundary well, which the spheres of a mesh no longer Delaunay do
+  // not give).
+  enum class Cavity_rule { spheres, quality };
+
+  // region[0] = t on entry; returns the region's size.
+  std::size_t grow_cavity(const Worker& w, Tet_id t, const double* p, Cavity_rule rule, Tet_id* region,
+                          bool& foreign) const
+  {
+    const Flat_storage& m = cm_.mesh;
+    std::size_t region_size = 1;
+    for(std::size_t k = 0; k < region_size && region_size < max_steiner_region; ++k) {
+      const Vertex_id* kv = m.vertex_ids(region[k]);
+      for(int g = 0; g < 4 && region_size < max_steiner_region; ++g) {
+        if(cm_.is_constrained(region[k], g)) continue;
+        const Tet_id u = m.neighbor(region[k], g);
+        if(!is_volume(u) || cm_.subdomain[u] != cm_.subdomain[t]) continue;
+        if(std::find(region, region + region_size, u) != region + region_size) continue;
+        const Vertex_id* uv = m.vertex_ids(u);
+        if(!own_vertex(uv[0], w.partition) || !own_vertex(uv[1], w.partition) || !own_vertex(uv[2], w.partition) ||
+           !own_vertex(uv[3], w.partition)) {
+          foreign = true;
+          continue;
+        }
+        const bool grows =
+            rule == Cavity_rule::spheres
+                ? side_of_oriented_sphere(m.point(uv[0]), m.point(uv[1]), m.point(uv[2]), m.point(uv[3]), p) > 0
+                : quality(g == 0 ? p : m.point(kv[0]), g == 1 ? p : m.point(kv[1]), g == 2 ? p : m.point(kv[2]),
+                          g == 3 ? p : m.point(kv[3])) < options_.quality_threshold;
+        if(grows) region[region_size++] = u;
+      }
+    }
+    return region_size;
+  }
+
   // The best split of an interior edge or facet of t by a new vertex, or
   // the best cavity around one of its facets' regular apexes, if it raises
-  // the worst gamma of the region it replaces.  The new vertex is interior
+  // the worst quality of the region it replaces.  The new vertex is interior
   // (no constrained facet is in the region's inside), gets the mean size of
   // the split simplex's vertices (of t's, for a cavity), and may be
   // relocated later.  Only the sequential step comes here (a new vertex
@@ -1127,7 +1209,11 @@ private:
     bool foreign = false;
     Split best;
     Edge_ring r;
+    // The first split that leaves no bad tetrahedron ends the search: the
+    // position searches are most of the improvement's time.
+    auto region_is_good = [&] { return best.quality >= options_.quality_threshold; };
     for(const auto& e : cell_edge_vertices) {
+      if(region_is_good()) break;
       const Outcome o = edge_ring(w, t, e[0], e[1], r, max_ring_limit);
       foreign |= o == Outcome::foreign;
       if(o != Outcome::found) continue;
@@ -1143,7 +1229,7 @@ private:
       consider_split(w, c, r.tets, static_cast<std::size_t>(r.n), mid, (cm_.size[r.a] + cm_.size[r.b]) / 2, best);
     }
     const Vertex_id* tv = m.vertex_ids(t);
-    for(int f = 0; f < 4; ++f) {
+    for(int f = 0; f < 4 && !region_is_good(); ++f) {
       if(cm_.is_constrained(t, f)) continue;
       const Tet_id u = m.neighbor(t, f);
       if(!is_volume(u) || cm_.subdomain[u] != cm_.subdomain[t]) continue;
@@ -1169,41 +1255,34 @@ private:
       consider_split(w, c, region, 2, centroid, size, best);
     }
     // A vertex where a facet of t would have its regular apex (on t's
-    // side), joined to the boundary of the tetrahedra whose circumscribed
-    // spheres hold it, grown from t across unconstrained facets (a
-    // Bowyer-Watson cavity that stops at the surface).  Where t lies flat on
-    // the surface, with two surface triangles at a nearly flat edge, its
-    // only interior edge and facets lie near the surface too, and no split
-    // of them takes the new vertex deep enough; the cavity reaches the
-    // tetrahedra behind them.  (Elephant, 1 thread: 69 tetrahedra left
-    // under gamma 0.3 without it, 11 with it; fandisk 4 and 0.)
+    // side), joined to the boundary of a cavity grown from t across
+    // unconstrained facets (grow_cavity), which stops at the surface.
+    // Where t lies flat on the surface, with two surface triangles at a
+    // nearly flat edge, its only interior edge and facets lie near the
+    // surface too, and no split of them takes the new vertex deep enough;
+    // the cavity reaches the tetrahedra behind them.  (Elephant, 1 thread,
+    // gamma alone: 69 tetrahedra left under gamma 0.3 without cavities, 11
+    // with Bowyer-Watson ones, 1 with both rules; bunny00 27 and 1 for the
+    // last two, its smallest dihedral angle 4.2 and 8.8 degrees.)
     double corners_size = 0;
     for(int i = 0; i < 4; ++i) corners_size += cm_.size[tv[i]] / 4;
-    for(int f = 0; f < 4; ++f) {
+    std::vector<std::vector<Tet_id>> cavities_tried; // sorted: two rules or apexes often give the same
+    for(int f = 0; f < 4 && !region_is_good(); ++f) {
       double apex[3];
       regular_apex(tv, f, apex);
-      Tet_id region[max_steiner_region] = {t};
-      std::size_t region_size = 1;
-      for(std::size_t k = 0; k < region_size && region_size < max_steiner_region; ++k) {
-        for(int g = 0; g < 4 && region_size < max_steiner_region; ++g) {
-          if(cm_.is_constrained(region[k], g)) continue;
-          const Tet_id u = m.neighbor(region[k], g);
-          if(!is_volume(u) || cm_.subdomain[u] != cm_.subdomain[t]) continue;
-          if(std::find(region, region + region_size, u) != region + region_size) continue;
-          const Vertex_id* uv = m.vertex_ids(u);
-          if(!own_vertex(uv[0], w.partition) || !own_vertex(uv[1], w.partition) ||
-             !own_vertex(uv[2], w.partition) || !own_vertex(uv[3], w.partition)) {
-            foreign = true;
-            continue;
-          }
-          if(side_of_oriented_sphere(m.point(uv[0]), m.point(uv[1]), m.point(uv[2]), m.point(uv[3]), apex) > 0)
-            region[region_size++] = u;
-        }
+      for(const Cavity_rule rule : {Cavity_rule::spheres, Cavity_rule::quality}) {
+        if(region_is_good()) break;
+        Tet_id region[max_steiner_region] = {t};
+        const std::size_t region_size = grow_cavity(w, t, apex, rule, region, foreign);
+        std::vector<Tet_id> sorted(region, region + region_size);
+        std::sort(sorted.begin(), sorted.end());
+        if(std::find(cavities_tried.begin(), cavities_tried.end(), sorted) != cavities_tried.end()) continue;
+        cavities_tried.push_back(std::move(sorted));
+        // t alone would be a 1-4 split of t from inside it, which cannot
+        // make a sliver's four corners into good tetrahedra.
+        if(region_size < 2 || !star_of_region(region, region_size, c, w.made, w.inside, w.on_boundary)) continue;
+        consider_split(w, c, region, region_size, apex, corners_size, best);
       }
-      // t alone would be a 1-4 split of t from inside it, which cannot
-      // make a sliver's four corners into good tetrahedra.
-      if(region_size < 2 || !star_of_region(region, region_size, c, w.made, w.inside, w.on_boundary)) continue;
-      consider_split(w, c, region, region_size, apex, corners_size, best);
     }
     if(best.gain <= 0) {
       if(!foreign) no_split_helped_.insert(std::upper_bound(no_split_helped_.begin(), no_split_helped_.end(), key), key);
@@ -1233,6 +1312,7 @@ private:
   std::vector<Tet_id> incident_;
   std::vector<std::uint8_t> partition_of_vertex_;
   std::vector<Tet_id> need_steiner_; // gathered from the partitions' workers
+  double dihedral_scale_ = 0; // quality_threshold / sin(min_dihedral_target); 0: gamma alone
   bool steiner_phase_ = false;
   bool every_bad_tetrahedron_ = true; // the pass works on inactive ones too
   std::vector<std::uint8_t> active_, changed_; // per vertex: changed in the last pass, in this one

@@ -37,8 +37,11 @@ inline double norm(const double* x) { return std::sqrt(dot(x, x)); }
 
 } // namespace quality_detail
 
-// gamma of (a, b, c, d), with the sign of its orientation.
-inline double gamma_quality(const double* a, const double* b, const double* c, const double* d)
+// gamma of (a, b, c, d), with the sign of its orientation; with
+// `smallest_dihedral_sine`, also the sine of its smallest dihedral angle,
+// from the same facet normals (a positive tetrahedron's only: 0 otherwise).
+inline double gamma_quality(const double* a, const double* b, const double* c, const double* d,
+                            double* smallest_dihedral_sine = nullptr)
 {
   using namespace quality_detail;
   double u[3], v[3], w[3], vw[3], wu[3], uv[3];
@@ -56,8 +59,23 @@ inline double gamma_quality(const double* a, const double* b, const double* c, c
   for(int i = 0; i < 3; ++i) N[i] = uu * vw[i] + vv * wu[i] + ww * uv[i];
   // Facet areas times 2: (b, c, d) from (c - b) x (d - b) = vw + wu + uv.
   double bcd[3] = {vw[0] + wu[0] + uv[0], vw[1] + wu[1] + uv[1], vw[2] + wu[2] + uv[2]};
-  const double twice_area = norm(uv) + norm(vw) + norm(wu) + norm(bcd);
+  const double l_uv = norm(uv), l_vw = norm(vw), l_wu = norm(wu), l_bcd = norm(bcd);
+  const double twice_area = l_uv + l_vw + l_wu + l_bcd;
   const double denominator = twice_area * norm(N);
+  if(smallest_dihedral_sine) {
+    *smallest_dihedral_sine = 0;
+    if(D > 0 && l_uv > 0 && l_vw > 0 && l_wu > 0 && l_bcd > 0) {
+      // With D > 0 the outward normals are -uv, -vw, -wu (the facets
+      // opposite d, b, c) and bcd (opposite a); the dihedral angle at the
+      // edge two facets share has the cosine of minus their normals' dot
+      // product.  The smallest angle has the largest cosine, and is at most
+      // the regular tetrahedron's 70.5 degrees, where the sine still rises.
+      const double highest = std::max({-dot(uv, vw) / (l_uv * l_vw), -dot(uv, wu) / (l_uv * l_wu),
+                                       -dot(vw, wu) / (l_vw * l_wu), dot(uv, bcd) / (l_uv * l_bcd),
+                                       dot(vw, bcd) / (l_vw * l_bcd), dot(wu, bcd) / (l_wu * l_bcd)});
+      *smallest_dihedral_sine = std::sqrt(std::max(0.0, 1 - highest * highest));
+    }
+  }
   if(!(denominator > 0)) return 0;
   // 3 D |D| / (A |N|) with A = twice_area / 2.
   return 6 * D * std::abs(D) / denominator;
