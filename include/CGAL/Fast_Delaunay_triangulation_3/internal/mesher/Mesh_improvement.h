@@ -159,6 +159,7 @@ public:
         every_bad_tetrahedron_ = pass == 0;
         active_.swap(changed_);
         changed_.assign(cm_.mesh.vertices.size(), 0);
+        reshaped_.clear();
         const std::size_t changes = operations(stats);
         improve(bad, stats);
         bad = bad_tetrahedra_after_pass(bad);
@@ -220,6 +221,7 @@ private:
     Improvement_statistics stats;
     std::vector<Tet_id> deferred;
     std::vector<Tet_id> need_steiner; // left for the sequential step, which may add vertices
+    std::vector<Tet_id> reshaped;     // slots written or with a corner moved
     std::vector<Tet_id> ball;
     std::vector<std::array<Vertex_id, 4>> ball_corners;
     std::vector<std::array<Vertex_id, 4>> made;
@@ -305,44 +307,39 @@ private:
   }
   double quality_of(Tet_id t) const { return quality_of(cm_.mesh.vertex_ids(t)); }
 
-  // The tetrahedra of quality under the threshold after a pass, from the list before it: only a tetrahedron
-  // with a changed vertex (changed_) can have changed its quality, so the
-  // others keep their place in or out of the list, and only those are
+  // The tetrahedra of quality under the threshold after a pass, from the
+  // list before it: only a tetrahedron whose slot was written or whose
+  // corner moved in the pass (reshaped_) can have changed its quality, so
+  // the others keep their place in or out of the list, and only those are
   // measured (a pass late in the improvement changes a few hundred of a
   // million tetrahedra).  In slot order too.
-  std::vector<Bad_tet> bad_tetrahedra_after_pass(const std::vector<Bad_tet>& before) const
+  std::vector<Bad_tet> bad_tetrahedra_after_pass(const std::vector<Bad_tet>& before)
   {
-    const Flat_storage& m = cm_.mesh;
-    auto changed = [&](Tet_id t) {
-      const Vertex_id* tv = m.vertex_ids(t);
-      return changed_[tv[0]] || changed_[tv[1]] || changed_[tv[2]] || changed_[tv[3]];
-    };
-    const std::size_t slots = m.number_of_slots();
-    const int chunks = chunk_count(slots, std::max(1, options_.threads));
-    std::vector<std::vector<Bad_tet>> found(chunks);
-    for_each_chunk(chunks, [&](int c) {
-      const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
-      for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
-        if(!is_volume(t) || !changed(t)) continue;
-        const double g = quality_of(t);
-        if(g < options_.quality_threshold) found[c].push_back({g, t});
-      }
-    });
+    std::sort(reshaped_.begin(), reshaped_.end());
+    reshaped_.erase(std::unique(reshaped_.begin(), reshaped_.end()), reshaped_.end());
+    if(ever_reshaped_.size() < cm_.mesh.number_of_slots()) ever_reshaped_.resize(cm_.mesh.number_of_slots(), 0);
     std::vector<Bad_tet> bad;
     for(const Bad_tet& b : before)
-      if(is_volume(b.t) && !changed(b.t)) bad.push_back(b);
-    for(const auto& run : found) bad.insert(bad.end(), run.begin(), run.end());
+      if(is_volume(b.t) && !std::binary_search(reshaped_.begin(), reshaped_.end(), b.t)) bad.push_back(b);
+    for(Tet_id t : reshaped_) {
+      ever_reshaped_[t] = 1;
+      if(!is_volume(t)) continue;
+      const double q = quality_of(t);
+      if(q < options_.quality_threshold) bad.push_back({q, t});
+    }
     std::sort(bad.begin(), bad.end(), [](const Bad_tet& x, const Bad_tet& y) { return x.t < y.t; });
     return bad;
   }
 
   // Over the volumes' tetrahedra: the lowest gamma, how many are under the
   // threshold, the smallest dihedral angle and how many are under 10
-  // degrees; in `bad`, if given, the tetrahedra of quality under the
-  // threshold (the work list), in slot order.
+  // degrees.  The first call (with `bad`: the tetrahedra of quality under
+  // the threshold, the work list, in slot order) keeps each slot's gamma
+  // and sine; the last measures again only the slots reshaped since.
   void shape_figures(double& lowest_gamma, std::size_t& under_threshold, double& smallest_angle,
-                     std::size_t& below_10_degrees, std::vector<Bad_tet>* bad = nullptr) const
+                     std::size_t& below_10_degrees, std::vector<Bad_tet>* bad = nullptr)
   {
+    if(bad) initial_shape_.assign(cm_.mesh.number_of_slots(), {0.0, 0.0});
     const Flat_storage& m = cm_.mesh;
     const std::size_t slots = m.number_of_slots();
     const int chunks = chunk_count(slots, std::max(1, options_.threads));
@@ -353,9 +350,15 @@ private:
       const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
       for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
         if(!is_volume(t)) continue;
-        const Vertex_id* tv = m.vertex_ids(t);
-        double sine; // of the smallest angle, at most 70.5 degrees
-        const double g = gamma_quality(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), &sine);
+        double g, sine; // of the smallest angle, at most 70.5 degrees
+        if(!bad && t < initial_shape_.size() && !(t < ever_reshaped_.size() && ever_reshaped_[t])) {
+          g = initial_shape_[t][0];
+          sine = initial_shape_[t][1];
+        } else {
+          const Vertex_id* tv = m.vertex_ids(t);
+          g = gamma_quality(m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3]), &sine);
+          if(bad) initial_shape_[t] = {g, sine};
+        }
         lowest[c] = std::min(lowest[c], g);
         under[c] += g < options_.quality_threshold ? 1 : 0;
         const double q = quality_of_shape(g, sine);
@@ -420,7 +423,7 @@ private:
         std::max(1, std::min(options_.threads, 255)), std::max<std::size_t>(1, bad.size() / options_.min_bad_per_partition)));
     need_steiner_.clear();
     if(partitions > 1) {
-      const std::vector<std::uint64_t> keys = vertex_keys();
+      const std::vector<std::uint64_t>& keys = vertex_keys();
       for(int attempt = 0; attempt < 2 && !todo.empty(); ++attempt)
         todo = attempt_in_partitions(todo, partitions, keys, attempt == 0 ? 0.0 : 0.5, stats);
       // What only a new vertex could help joins the sequential step, in
@@ -434,14 +437,24 @@ private:
     run_workers(lists, stats);
   }
 
-  std::vector<std::uint64_t> vertex_keys() const
+  // The Moore keys that place vertices in partitions, computed once (and
+  // for each added vertex): a relocated vertex keeps its key, which only
+  // decides which partition owns it.
+  const std::vector<std::uint64_t>& vertex_keys()
   {
     const Flat_storage& m = cm_.mesh;
-    const Moore_grid grid(cm_.box_lo, cm_.box_hi, moore_bits_per_axis(m.vertices.size()));
+    if(vertex_keys_.empty()) key_grid_bits_ = moore_bits_per_axis(m.vertices.size());
+    const Moore_grid grid(cm_.box_lo, cm_.box_hi, key_grid_bits_);
     const Moore_curve curve(grid.bits_per_axis());
-    std::vector<std::uint64_t> keys(m.vertices.size());
-    for(Vertex_id v = 0; v < m.vertices.size(); ++v) keys[v] = grid.key(curve, m.point(v));
-    return keys;
+    const std::size_t first = vertex_keys_.size(), n = m.vertices.size() - first;
+    vertex_keys_.resize(m.vertices.size());
+    const int chunks = chunk_count(n, std::max(1, options_.threads));
+    for_each_chunk(chunks, [&](int c) {
+      const std::size_t end = first + chunk_begin(n, chunks, c + 1);
+      for(std::size_t v = first + chunk_begin(n, chunks, c); v < end; ++v)
+        vertex_keys_[v] = grid.key(curve, m.point(static_cast<Vertex_id>(v)));
+    });
+    return vertex_keys_;
   }
 
   // Cuts at the keys of the bad tetrahedra's first vertices, at shares
@@ -464,10 +477,15 @@ private:
     std::vector<std::uint64_t> cuts(partitions);
     for(int j = 0; j < partitions; ++j)
       cuts[j] = sorted[std::min(sorted.size() - 1, static_cast<std::size_t>((j + shift) * sorted.size() / partitions))];
-    for(Vertex_id v = 0; v < m.vertices.size(); ++v) {
-      const int above = static_cast<int>(std::upper_bound(cuts.begin(), cuts.end(), keys[v]) - cuts.begin());
-      partition_of_vertex_[v] = static_cast<std::uint8_t>(above == 0 ? partitions - 1 : above - 1);
-    }
+    const std::size_t n = m.vertices.size();
+    const int chunks = chunk_count(n, std::max(1, options_.threads));
+    for_each_chunk(chunks, [&](int c) {
+      const std::size_t end = chunk_begin(n, chunks, c + 1);
+      for(std::size_t v = chunk_begin(n, chunks, c); v < end; ++v) {
+        const int above = static_cast<int>(std::upper_bound(cuts.begin(), cuts.end(), keys[v]) - cuts.begin());
+        partition_of_vertex_[v] = static_cast<std::uint8_t>(above == 0 ? partitions - 1 : above - 1);
+      }
+    });
     std::vector<std::vector<Tet_id>> lists(partitions);
     std::vector<Tet_id> left;
     for(Tet_id t : todo) {
@@ -531,6 +549,7 @@ private:
         }
       m.free_tets.insert(m.free_tets.end(), free_lists[j].begin(), free_lists[j].end());
       retry.insert(retry.end(), w.deferred.begin(), w.deferred.end());
+      reshaped_.insert(reshaped_.end(), w.reshaped.begin(), w.reshaped.end());
       need_steiner_.insert(need_steiner_.end(), w.need_steiner.begin(), w.need_steiner.end());
     }
     m.resize_tets(workers[partitions - 1].next_fresh, Flat_storage::New_slots::left_unwritten);
@@ -648,6 +667,7 @@ private:
                        });
     after_replacement(w, w.made.size(), subdomain);
     mark_changed(w.made);
+    w.reshaped.insert(w.reshaped.end(), w.slots.begin(), w.slots.end());
   }
 
   // ------------------------------------------------------------ edge removal
@@ -1004,6 +1024,7 @@ private:
     // h belongs to the position: the user's bounds at the new one.
     cm_.size[v] = cm_.size.bounded(cm_.size[v], best, cm_.subdomain[w.ball.front()]);
     mark_changed(w.ball_corners);
+    w.reshaped.insert(w.reshaped.end(), w.ball.begin(), w.ball.end());
     ++w.stats.relocations;
     return Outcome::improved;
   }
@@ -1316,6 +1337,11 @@ private:
   bool steiner_phase_ = false;
   bool every_bad_tetrahedron_ = true; // the pass works on inactive ones too
   std::vector<std::uint8_t> active_, changed_; // per vertex: changed in the last pass, in this one
+  std::vector<Tet_id> reshaped_;               // slots written or with a corner moved in this pass
+  std::vector<std::uint64_t> vertex_keys_;     // see vertex_keys()
+  int key_grid_bits_ = 0;
+  std::vector<std::uint8_t> ever_reshaped_;    // per slot, over all passes
+  std::vector<std::array<double, 2>> initial_shape_; // per slot: gamma and smallest dihedral sine before the passes
   std::vector<std::array<Vertex_id, 4>> no_split_helped_; // sorted corners, in order
   static constexpr Tet_id no_tet = ~Tet_id(0);
 };
