@@ -681,8 +681,8 @@ py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py
 // improve_mesh(points, tets, subdomains, triangles, ...): the mesher's
 // improvement on a mesh of the caller's; (points, tets, subdomains, statistics).
 py::tuple improve_mesh(const py::handle& points, const py::handle& tets, const py::object& subdomains,
-                       const py::object& triangles, double quality_threshold, double min_dihedral_target,
-                       const py::object& threads, bool add_points, int passes)
+                       const py::object& triangles, double quality_threshold, const py::object& threads,
+                       bool add_points, int passes, double min_dihedral_target)
 {
   CGAL::Fast_mesher_3::Mesher_options options;
   options.quality_threshold = quality_threshold;
@@ -839,9 +839,9 @@ one's H); a malformed line raises ValueError naming it.  A surface that is not c
 manifold and free of self-intersections raises ValueError naming the
 triangles.)");
   m.def("improve_mesh", &improve_mesh, py::arg("points"), py::arg("tets"), py::arg("subdomains") = py::none(),
-        py::arg("triangles") = py::none(), py::arg("quality_threshold") = 0.3,
+        py::arg("triangles") = py::none(), py::arg("quality_threshold") = 0.3, py::arg("threads") = py::none(),
+        py::arg("add_points") = true, py::arg("passes") = 10,
         py::arg("min_dihedral_target") = CGAL::Fast_mesher_3::Mesher_options().min_dihedral_target,
-        py::arg("threads") = py::none(), py::arg("add_points") = true, py::arg("passes") = 10,
         R"(The mesher's improvement on a tetrahedral mesh of your own.
 
 points (n, 3); tets (m, 4) indices into points, positively oriented;

@@ -152,6 +152,18 @@ inline std::size_t count_below(const mi::Constrained_mesh& cm, double threshold)
   return n;
 }
 
+inline double smallest_dihedral_degrees(const mi::Constrained_mesh& cm)
+{
+  double smallest = 180;
+  for(Tet_id t = 0; t < cm.mesh.number_of_slots(); ++t) {
+    if(!is_volume(cm, t)) continue;
+    const Vertex_id* tv = cm.mesh.vertex_ids(t);
+    const double* w[4] = {cm.mesh.point(tv[0]), cm.mesh.point(tv[1]), cm.mesh.point(tv[2]), cm.mesh.point(tv[3])};
+    smallest = std::min(smallest, mi::dihedral_range(w).smallest);
+  }
+  return smallest;
+}
+
 // The constrained facets by their vertices' coordinates, with the subdomains
 // on their two sides, and the volume of each subdomain.
 struct Invariants

@@ -317,8 +317,10 @@ TEST(Improvement, SteinerCavitiesUnderNearlyFlatSurfaceEdges)
   if(!mesher_shapes::read_cgal_data_surface("elephant.off", s))
     GTEST_SKIP() << FDT3_CGAL_DATA_DIR "/elephant.off is missing (apt install libcgal-demo, re-run CMake)";
   using namespace CGAL::Fast_mesher_3;
+  Mesher_options gamma_alone;
+  gamma_alone.min_dihedral_target = 0;
   Mesher_statistics stats;
-  const Tetrahedral_mesh mesh = mesh_surfaces(s.points, s.triangles, Mesher_options(), &stats);
+  const Tetrahedral_mesh mesh = mesh_surfaces(s.points, s.triangles, gamma_alone, &stats);
   const Quality_report q = quality_report(mesh);
   EXPECT_GT(stats.improvement.steiner_points, 0u);
   EXPECT_EQ(stats.improvement.bad_after, q.tetrahedra_below_gamma_0_3);
@@ -358,7 +360,16 @@ TEST(Improvement, DihedralTargetLiftsTheSmallestAngle)
   EXPECT_LT(q_gamma.min_dihedral_degrees, 15.0);
   EXPECT_GE(q.min_dihedral_degrees, 20.0 - 1e-9);
   EXPECT_NEAR(stats.min_dihedral_after, q.min_dihedral_degrees, 1e-9);
-  // The statistics still count gamma.
+  // The statistics still count gamma, not the tetrahedra worked on.
+  const Quality_report q_plain = quality_report(plain);
+  std::size_t under_20_degrees = 0;
+  for(const auto& tv : plain.tetrahedra) {
+    const double* w[4] = {plain.points[tv[0]].data(), plain.points[tv[1]].data(), plain.points[tv[2]].data(),
+                          plain.points[tv[3]].data()};
+    under_20_degrees += CGAL::Fast_Delaunay_triangulation_3_internal::mesher::dihedral_range(w).smallest < 20 ? 1 : 0;
+  }
+  EXPECT_EQ(stats.bad_before, q_plain.tetrahedra_below_gamma_0_3);
+  EXPECT_GT(under_20_degrees, stats.bad_before);
   EXPECT_EQ(stats.bad_after, q.tetrahedra_below_gamma_0_3);
   EXPECT_EQ(q.tetrahedra_below_gamma_0_3, 0u);
   EXPECT_EQ(q.inverted_tetrahedra, 0u);

@@ -68,4 +68,31 @@ TEST(ImprovementInPartitions, InvariantsQualityAndReproducibility)
   }
 }
 
+// With a dihedral target, in partitions: the statistics after the passes
+// (from the slots each pass reshaped, and the first scan's figures for the
+// others) are those of a full recount, and the mesh is reproducible.
+TEST(ImprovementInPartitions, DihedralTargetStatisticsMatchARecount)
+{
+  const mi::Constrained_mesh original = random_cube_mesh(15, 6, true);
+  for(int threads = 1; threads <= 3; ++threads) {
+    SCOPED_TRACE(std::to_string(threads) + " partitions");
+    mi::Improvement_options options = partitioned(threads);
+    options.min_dihedral_target = 15;
+    mi::Constrained_mesh cm = original;
+    const Invariants before = invariants(cm);
+    const mi::Improvement_statistics stats = mi::improve_mesh(cm, options);
+    expect_valid(cm);
+    expect_same_invariants(before, invariants(cm));
+    EXPECT_GT(stats.relocations + stats.edge_removals, 0u);
+    EXPECT_EQ(stats.bad_before, count_below(original, options.quality_threshold));
+    EXPECT_EQ(stats.bad_after, count_below(cm, options.quality_threshold));
+    EXPECT_DOUBLE_EQ(stats.min_gamma_after, worst_gamma(cm));
+    EXPECT_NEAR(stats.min_dihedral_after, smallest_dihedral_degrees(cm), 1e-9);
+    EXPECT_GT(stats.min_dihedral_after, stats.min_dihedral_before);
+    mi::Constrained_mesh again = original;
+    mi::improve_mesh(again, options);
+    EXPECT_TRUE(same_storage(cm.mesh, again.mesh));
+  }
+}
+
 } // namespace test_mesher_improvement_parallel

@@ -96,8 +96,9 @@ struct Mesher_options
   // Mesh improvement after refinement (Mesh_improvement.h): edge and face
   // removals, vertex relocation and, where nothing else helps, interior
   // Steiner points, on every tetrahedron whose gamma = 3 r_in / r_circ is
-  // under quality_threshold (Gmsh's default target), with the same
-  // partitions as refinement.  Off: the refined Delaunay mesh.
+  // under quality_threshold (Gmsh's default target) or whose smallest
+  // dihedral angle is under min_dihedral_target, with the same partitions
+  // as refinement.  Off: the refined Delaunay mesh.
   bool optimize = true;
   double quality_threshold = 0.3;
   // Degrees: a tetrahedron whose smallest dihedral angle is under this is
@@ -429,8 +430,8 @@ inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const 
 } // namespace mesher_detail
 
 // Improves a tetrahedral mesh in place, as the mesher's last step does
-// (options: quality_threshold, max_improvement_passes, threads,
-// improvement_adds_points): its boundary, its triangles and the facets
+// (options: quality_threshold, min_dihedral_target, max_improvement_passes,
+// threads, improvement_adds_points): its boundary, its triangles and the facets
 // between subdomains are kept exactly, points on them do not move, every
 // tetrahedron keeps its subdomain; interior points may move and, unless
 // improvement_adds_points is off, interior points may be added (after the
@@ -439,7 +440,8 @@ inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const 
 // naming the defect, for a mesh it cannot take (the mesh is left as it was):
 // tetrahedra not positively oriented, indices out of range, a facet in
 // three tetrahedra, a boundary that is not closed, triangles that are not
-// facets of the mesh.
+// facets of the mesh; and for options out of range.  With a dihedral
+// target the worst gamma may go down a little where an angle goes up.
 inline Improvement_statistics improve_mesh(Tetrahedral_mesh& mesh, const Mesher_options& options = Mesher_options())
 {
   using namespace mesher_detail;
