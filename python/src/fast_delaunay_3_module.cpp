@@ -584,10 +584,11 @@ private:
 
 #ifdef FDT3_PYTHON_WITH_MESHER
 CGAL::Fast_mesher_3::Mesher_options mesher_options(const py::object& size, const py::object& threads, bool optimize,
-                                                   const py::object& size_field)
+                                                   const py::object& size_field, double min_dihedral_target)
 {
   CGAL::Fast_mesher_3::Mesher_options options;
   options.optimize = optimize;
+  options.min_dihedral_target = min_dihedral_target;
   if(!size.is_none() && PyCallable_Check(size.ptr())) {
     // h(x, y, z), called from the mesher's threads while mesh() has let the
     // GIL go: each call takes it back.  The handle does not own the
@@ -662,9 +663,10 @@ std::vector<std::array<Index, K>> index_rows(const py::handle& given, std::size_
 }
 
 py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py::object& size,
-               const py::object& threads, bool optimize, const py::object& size_field)
+               const py::object& threads, bool optimize, const py::object& size_field, double min_dihedral_target)
 {
-  const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize, size_field);
+  const CGAL::Fast_mesher_3::Mesher_options options =
+      mesher_options(size, threads, optimize, size_field, min_dihedral_target);
   const Double_array v = point_rows(vertices, "vertices");
   std::vector<std::array<double, 3>> points(static_cast<std::size_t>(v.shape(0)));
   if(!points.empty()) std::copy(v.data(), v.data() + 3 * v.shape(0), &points[0][0]);
@@ -726,9 +728,10 @@ py::tuple improve_mesh(const py::handle& points, const py::handle& tets, const p
 }
 
 py::tuple mesh_files(const std::vector<std::string>& paths, const py::object& size, const py::object& threads,
-                     bool optimize, const py::object& size_field)
+                     bool optimize, const py::object& size_field, double min_dihedral_target)
 {
-  const CGAL::Fast_mesher_3::Mesher_options options = mesher_options(size, threads, optimize, size_field);
+  const CGAL::Fast_mesher_3::Mesher_options options =
+      mesher_options(size, threads, optimize, size_field, min_dihedral_target);
   if(paths.empty()) throw py::value_error("mesh_files: no file given");
   CGAL::Fast_mesher_3::Tetrahedral_mesh result;
   {
@@ -822,8 +825,10 @@ equal to an earlier vertex's point names that vertex.)")
                       [](const py::tuple& state) { return Row_triangulation::from_state(state); }));
 
 #ifdef FDT3_PYTHON_WITH_MESHER
+  const double default_dihedral_target = CGAL::Fast_mesher_3::Mesher_options().min_dihedral_target;
   m.def("mesh", &mesh, py::arg("vertices"), py::arg("triangles"), py::arg("size") = py::none(),
         py::arg("threads") = py::none(), py::arg("optimize") = true, py::arg("size_field") = py::none(),
+        py::arg("min_dihedral_target") = default_dihedral_target,
         R"(Tetrahedral mesh of the volumes bounded by closed triangulated surfaces.
 
 vertices (n, 3), triangles (t, 3) indices into vertices.  Returns (points,
@@ -835,13 +840,16 @@ a time under the GIL; an exception it raises ends the meshing as
 RuntimeError, a value that is not a positive number raises ValueError).
 size_field: a path to a size-field file, lines 'subdomain S H' (h at most
 H in subdomain S) and 'X Y Z H' (background points: h at most the nearest
-one's H); a malformed line raises ValueError naming it.  A surface that is not closed, oriented,
+one's H); a malformed line raises ValueError naming it.  optimize: improve
+the tetrahedra under gamma 0.3 or with a dihedral angle under
+min_dihedral_target degrees (0: gamma alone; out of [0, 70] raises
+ValueError).  A surface that is not closed, oriented,
 manifold and free of self-intersections raises ValueError naming the
 triangles.)");
   m.def("improve_mesh", &improve_mesh, py::arg("points"), py::arg("tets"), py::arg("subdomains") = py::none(),
         py::arg("triangles") = py::none(), py::arg("quality_threshold") = 0.3, py::arg("threads") = py::none(),
         py::arg("add_points") = true, py::arg("passes") = 10,
-        py::arg("min_dihedral_target") = CGAL::Fast_mesher_3::Mesher_options().min_dihedral_target,
+        py::arg("min_dihedral_target") = default_dihedral_target,
         R"(The mesher's improvement on a tetrahedral mesh of your own.
 
 points (n, 3); tets (m, 4) indices into points, positively oriented;
@@ -861,6 +869,7 @@ facet in three tetrahedra, a boundary that is not closed, a triangle that
 is not a facet) raises ValueError naming the defect.)");
   m.def("mesh_files", &mesh_files, py::arg("paths"), py::arg("size") = py::none(), py::arg("threads") = py::none(),
         py::arg("optimize") = true, py::arg("size_field") = py::none(),
+        py::arg("min_dihedral_target") = default_dihedral_target,
         "mesh() of the surfaces in files (.off .stl .obj .ply).");
 #endif
 }

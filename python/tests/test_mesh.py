@@ -262,3 +262,8 @@ def test_improve_mesh_reaches_a_dihedral_target_and_refuses_one_out_of_range():
     for bad in (-1, 71, float("nan")):
         with pytest.raises(ValueError, match=r"min_dihedral_target must be in \[0, 70\] degrees"):
             fast_delaunay_3.improve_mesh(points, tets, subdomains, min_dihedral_target=bad)
+        with pytest.raises(ValueError, match="min_dihedral_target"):
+            fast_delaunay_3.mesh_files([path], min_dihedral_target=bad)
+    # The mesher's own improvement takes the target too.
+    meshed = fast_delaunay_3.mesh_files([path], threads=1, min_dihedral_target=20)
+    assert (smallest_dihedral_degrees(meshed[0], meshed[1]) < 20 - 1e-9).sum() <= 3
