@@ -131,7 +131,7 @@ public:
   {
     options_.max_ring = std::max(3, std::min(options_.max_ring, max_ring_limit));
     const double target = std::min(options_.min_dihedral_target, 70.0);
-    if(target > 0) dihedral_scale_ = options_.quality_threshold / std::sin(target * 3.14159265358979323846 / 180);
+    if(target > 0) dihedral_scale_ = options_.quality_threshold / std::sin(target * quality_detail::pi / 180);
   }
 
   Improvement_statistics run()
@@ -366,7 +366,7 @@ private:
         under[c] += g < options_.quality_threshold ? 1 : 0;
         const double q = quality_of_shape(g, sine);
         if(bad && q < options_.quality_threshold) found[c].push_back({q, t});
-        const double angle = std::asin(std::min(1.0, sine)) * 180 / 3.14159265358979323846;
+        const double angle = degrees_of_sine(sine);
         smallest[c] = std::min(smallest[c], angle);
         below[c] += angle < 10 ? 1 : 0;
       }
@@ -381,10 +381,11 @@ private:
     }
   }
 
-  // The quality of the tetrahedron that t's worst input triangle would
-  // make with its regular apex (1 without one): about the best any
-  // tetrahedron on that triangle can have.
-  double input_triangle_ceiling(Tet_id t) const
+  // The lowest `measure` (gamma_quality, or this class's quality) of the
+  // tetrahedra that t's input triangles make with their regular apexes (1
+  // without one): about the best any tetrahedron on those triangles can have.
+  template <class Measure>
+  double input_triangle_ceiling(Tet_id t, const Measure& measure) const
   {
     const Flat_storage& m = cm_.mesh;
     const Vertex_id* tv = m.vertex_ids(t);
@@ -393,26 +394,23 @@ private:
       if(!cm_.is_constrained(t, f)) continue;
       double apex[3];
       regular_apex(tv, f, apex);
-      ceiling = std::min(ceiling, quality(apex, m.point(tv[facet_vertex[f][0]]), m.point(tv[facet_vertex[f][1]]),
+      ceiling = std::min(ceiling, measure(apex, m.point(tv[facet_vertex[f][0]]), m.point(tv[facet_vertex[f][1]]),
                                           m.point(tv[facet_vertex[f][2]])));
     }
     return ceiling;
   }
+  double input_triangle_ceiling(Tet_id t) const
+  {
+    return input_triangle_ceiling(t, [this](const double* a, const double* b, const double* c, const double* d) {
+      return quality(a, b, c, d);
+    });
+  }
 
   bool on_skinny_input_triangle(Tet_id t) const
   {
-    const Flat_storage& m = cm_.mesh;
-    for(int f = 0; f < 4; ++f) {
-      if(!cm_.is_constrained(t, f)) continue;
-      double apex[3];
-      regular_apex(m.vertex_ids(t), f, apex);
-      const Vertex_id* tv = m.vertex_ids(t);
-      const double* x = m.point(tv[facet_vertex[f][0]]);
-      const double* y = m.point(tv[facet_vertex[f][1]]);
-      const double* z = m.point(tv[facet_vertex[f][2]]);
-      if(gamma_quality(apex, x, y, z) < options_.quality_threshold) return true;
-    }
-    return false;
+    return input_triangle_ceiling(t, [](const double* a, const double* b, const double* c, const double* d) {
+             return gamma_quality(a, b, c, d);
+           }) < options_.quality_threshold;
   }
 
   // ------------------------------------------------------------ partitions

@@ -34,6 +34,7 @@ inline void cross(const double* x, const double* y, double* z)
 }
 inline double dot(const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
 inline double norm(const double* x) { return std::sqrt(dot(x, x)); }
+constexpr double pi = 3.14159265358979323846;
 
 } // namespace quality_detail
 
@@ -100,7 +101,9 @@ inline double dihedral_cosine(const double* a, const double* b, const double* c,
   return std::max(-1.0, std::min(1.0, dot(n1, n2) / l));
 }
 
-inline double degrees_of_cosine(double cosine) { return std::acos(cosine) * 180.0 / 3.14159265358979323846; }
+inline double degrees_of_cosine(double cosine) { return std::acos(cosine) * 180.0 / quality_detail::pi; }
+// For the smallest dihedral angle, at most 70.5 degrees.
+inline double degrees_of_sine(double sine) { return std::asin(std::min(1.0, sine)) * 180 / quality_detail::pi; }
 
 // Angle at edge (a, b) between facets (a, b, c) and (a, b, d), in degrees.
 inline double dihedral_degrees(const double* a, const double* b, const double* c, const double* d)
