@@ -296,6 +296,7 @@ class Delaunay_kernel
 {
 public:
   static constexpr bool partitioned = Ownership::partitioned;
+  typedef Paths Vector_paths;
 
   Delaunay_kernel(Flat_storage& mesh, Insertion_scratch& scratch, Slots slots,
                   const Static_filter& filter = Static_filter(),
