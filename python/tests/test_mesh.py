@@ -254,9 +254,9 @@ def test_improve_mesh_reaches_a_dihedral_target_and_refuses_one_out_of_range():
     gamma_alone = smallest_dihedral_degrees(by_gamma[0], by_gamma[1])
     with_target = smallest_dihedral_degrees(by_angle[0], by_angle[1])
     stats = by_angle[3]
-    # Under the target: at most the few left under gamma 0.3 (the statistics count gamma).
+    # Under the target: a few (a Steiner point may leave some near it); the statistics count gamma.
     assert stats["bad_after"] == (gamma(by_angle[0], by_angle[1]) < 0.3).sum()
-    assert (with_target < 20 - 1e-9).sum() <= stats["bad_after"] <= 3
+    assert stats["bad_after"] <= 3 and (with_target < 20 - 1e-9).sum() <= 3
     assert (gamma_alone < 20).sum() > 100
     assert stats["min_dihedral_after"] == pytest.approx(with_target.min(), abs=1e-6)
     for bad in (-1, 71, float("nan")):
