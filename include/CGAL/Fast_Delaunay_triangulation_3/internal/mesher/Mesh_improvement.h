@@ -6,9 +6,10 @@
 // using the same parallel framework").  A tetrahedron's quality is its
 // gamma (Tetrahedron_quality.h) or, with a dihedral target, the lower of
 // gamma and threshold * sin(smallest dihedral angle) / sin(target); every
-// tetrahedron of quality under the threshold is worked on (in slot order in
-// the first pass, worst first after it) by local operations that each must raise the worst quality of the region
-// they touch:
+// tetrahedron of quality under the threshold is worked on (in slot order
+// in the first pass of flips and moves, worst first after it) by local
+// operations that each must raise the worst quality of the region they
+// touch:
 //
 //   edge removal   the ring of n = 3..max_ring tetrahedra around one of its
 //                  edges is replaced by the 2n - 4 tetrahedra of the best
@@ -334,8 +335,8 @@ private:
   // list before it: only a tetrahedron whose slot was written or whose
   // corner moved in the pass (reshaped_) can have changed its quality, so
   // the others keep their place in or out of the list, and only those are
-  // measured (a pass late in the improvement changes a few hundred of a
-  // million tetrahedra).  In slot order too.
+  // looked at again (a pass late in the improvement changes a few hundred
+  // of a million tetrahedra).  In slot order too.
   std::vector<Bad_tet> bad_tetrahedra_after_pass(const std::vector<Bad_tet>& before)
   {
     std::sort(reshaped_.begin(), reshaped_.end());
@@ -365,7 +366,8 @@ private:
     const std::size_t slots = cm_.mesh.number_of_slots();
     const int chunks = chunk_count(slots, std::max(1, options_.threads));
     const double sine_of_10_degrees = std::sin(10 * quality_detail::pi / 180);
-    std::vector<double> lowest(chunks, 1.0), smallest_sine(chunks, 1.0);
+    // A sine above 1 stands for no tetrahedron (180 degrees, as before any).
+    std::vector<double> lowest(chunks, 1.0), smallest_sine(chunks, 2.0);
     std::vector<std::size_t> under(chunks, 0), below(chunks, 0);
     std::vector<std::vector<Bad_tet>> found(chunks);
     for_each_chunk(chunks, [&](int c) {
@@ -383,7 +385,8 @@ private:
       }
     });
     lowest_gamma = *std::min_element(lowest.begin(), lowest.end());
-    smallest_angle = degrees_of_sine(*std::min_element(smallest_sine.begin(), smallest_sine.end()));
+    const double sine = *std::min_element(smallest_sine.begin(), smallest_sine.end());
+    smallest_angle = sine > 1 ? 180 : degrees_of_sine(sine);
     under_threshold = below_10_degrees = 0;
     for(int c = 0; c < chunks; ++c) {
       under_threshold += under[c];

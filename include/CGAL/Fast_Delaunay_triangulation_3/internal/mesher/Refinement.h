@@ -5,7 +5,8 @@
 // tetrahedra, SAMPLEPOINTS (circumcentres of the tetrahedra whose
 // circumradius exceeds 1.4 h; the centroid when the centre falls outside
 // the tetrahedron's subdomain), FILTERPOINTS (no two accepted points closer
-// than 0.7 h) and INSERTPOINTS in one large batch per pass.
+// than 0.7 h) and INSERTPOINTS in one large batch per pass (the first pass
+// in two rounds, see insert_points).
 //
 // The cavity of a refinement point is the Delaunay cavity with the two
 // changes of §4: it never crosses a constrained facet (so the surface is
@@ -107,7 +108,8 @@ inline bool circumcentre(const double* a, const double* b, const double* c, cons
 // step (see Delaunay_point_insertion).  Vertex v is point v - first_new of
 // the batch.  Inside a task it reads and writes only what its kernel owns:
 // the tetrahedra of its partition and their neighbours, whose slots are its
-// own (Partition_ownership), and their subdomain and constrained entries.
+// own (Partition_ownership), and their subdomain, constrained and no_sample
+// entries.
 class Constrained_point_insertion
 {
 public:
@@ -396,7 +398,8 @@ private:
   // grid cells and the insertions' tetrahedra are near those of the last
   // point (in sampling order, the slot order of tetrahedra reused far
   // apart, the sequential walk took 19 steps per point; bunny00, 1 thread).
-  // Keeping the order also keeps an accepted point from being refused at
+  // Where the insertion keeps the order (sequentially, after the first
+  // pass's first round), an accepted point is also never refused at
   // insertion by one accepted after it with a smaller h.
   void sort_along_curve(std::vector<Refinement_point>& points) const
   {
