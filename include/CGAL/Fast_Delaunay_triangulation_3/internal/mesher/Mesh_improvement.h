@@ -1165,12 +1165,15 @@ private:
     }
     // A true sliver (quality under a quarter of the threshold) may go for
     // any number of tetrahedra at half the threshold or better (fandisk,
-    // 2 threads: gamma 0.0006 for five at 0.21 or better); any bad
-    // tetrahedron may go for any number at 0.8 of the threshold or better
-    // (bunny00, 2 threads: the last one, 8.95 degrees, between two surface
-    // triangles, for four of quality 0.26, 13 degrees or more).
+    // 2 threads: gamma 0.0006 for five at 0.21 or better); a region's
+    // worst may go for any number at 0.8 of the threshold or better if
+    // that raises it by a quarter (bunny00, 2 threads: the last bad one,
+    // 8.95 degrees, between two surface triangles, for four of quality
+    // 0.26, 13 degrees or more), not for less: a tetrahedron just under
+    // the threshold would be traded for several (torus, target 20
+    // degrees: one left at 19.93 degrees).
     const bool removes_a_sliver = worst < options_.quality_threshold / 4 && q >= options_.quality_threshold / 2;
-    const bool nearly_good = q >= 0.8 * options_.quality_threshold;
+    const bool nearly_good = q >= 0.8 * options_.quality_threshold && q >= 1.25 * worst;
     if(q > 0 && q - worst > best.gain &&
        (removes_a_sliver || nearly_good || bad_count(w.made, c, p) <= bad_in_region + 2)) {
       best.gain = q - worst;
