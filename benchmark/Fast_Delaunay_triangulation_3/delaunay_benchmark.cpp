@@ -312,6 +312,15 @@ Engine_result run_fast_parallel(const Points& points, int threads)
   return insert_and_count(triangulation, points);
 }
 
+// The same with the barrier-synchronised engine (the seed paper's two-level kernel) instead of the partitions.
+Engine_result run_fast_barrier(const Points& points, int threads)
+{
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  Fast_parallel_dt triangulation;
+  triangulation.set_parallel_engine(Fast_parallel_dt::Parallel_engine::barrier);
+  return insert_and_count(triangulation, points);
+}
+
 // Every tenth vertex removed as one range, remove(first, last), on `threads` threads: CGAL's parallel removal
 // (its lock grid, built before the clock starts, as the insertion is) and ours (slabs of space).
 template <class Triangulation>
@@ -379,6 +388,7 @@ const std::vector<Engine>& engine_table()
 #ifdef CGAL_LINKED_WITH_TBB
       {"cgal-par", true, true, run_cgal_parallel},
       {"fast-par", true, true, run_fast_parallel},
+      {"fast-barrier", true, false, run_fast_barrier},
 #endif
       {"fast-loop", false, false, run_fast_loop, "cgal-loop"},
       {"cgal-loop", false, false, run_cgal_loop, "cgal-loop"},

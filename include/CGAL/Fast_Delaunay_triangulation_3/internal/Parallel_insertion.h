@@ -61,6 +61,10 @@ struct Partition_round
   int partitions = 1;              // 1: sequential
   std::size_t mesh_vertices = 0;   // vertices in the mesh before the attempt
   int papers_rule_partitions = 0;  // partitions that went on under the paper's ownership rule
+  // Barrier engine (Barrier_insertion.h; `partitions` holds its runs):
+  // cavities searched again in a later iteration because a run of smaller
+  // index claimed one of their tetrahedra.
+  std::size_t retried = 0;
   double seconds = 0;
 };
 

@@ -20,6 +20,7 @@
 #define CGAL_FDT3_INTERNAL_TRIANGULATION_CORE_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/BRIO.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Barrier_insertion.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Displacement_flips.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
@@ -66,6 +67,9 @@ public:
   bool timed = false; // per-phase times (four clock reads per point)
   // Moore partitions inserted concurrently (1: sequential kernel only).
   int partitions = 1;
+  // Which parallel engine inserts the BRIO rounds after the first.
+  enum class Parallel_engine { partitioned, barrier };
+  Parallel_engine parallel_engine = Parallel_engine::partitioned;
   // Called during a bulk insertion of n > 1 points with (points settled, n):
   // (0, n) once sorted, then increasing values every few thousand points
   // (per chunk of the sequential loop, per attempt and per chunk of
@@ -705,6 +709,19 @@ private:
       return;
     }
     const Clock::time_point t0 = Clock::now();
+    if(parallel_engine == Parallel_engine::barrier) {
+      Barrier_insertion barrier(mesh, Static_filter::for_box(box_lo_, box_hi_),
+                                Sub_determinant_filter::for_box(box_lo_, box_hi_), timed);
+      std::size_t begin = 0;
+      for(std::size_t r = 0; r < round_end.size(); ++r) {
+        barrier.insert(vertex_list(first_new + begin, first_new + round_end[r], skip), r == 0 ? 1 : partitions,
+                       first_new, duplicate_of, hint_, last_report.rounds, last_report.kernel);
+        begin = round_end[r];
+        report_progress(begin);
+      }
+      last_report.insertion_seconds += seconds(t0, Clock::now());
+      return;
+    }
     Partitioned_insertion engine(mesh, Static_filter::for_box(box_lo_, box_hi_),
                                  Sub_determinant_filter::for_box(box_lo_, box_hi_), box_lo_, box_hi_,
                                  seed, timed);

@@ -1,0 +1,636 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Barrier-synchronised parallel insertion: the two-level multithreaded
+// Delaunay kernel of Remacle et al., "Multi-threaded mesh generation"
+// (§3-4), beside the Moore-partitioned engine of Parallel_insertion.h.
+//
+// The points of a BRIO round, in curve order, are cut into runs of equal
+// size (the paper's M threads times M2 points each).  Every iteration takes
+// the next point of every run, in two steps separated by barriers:
+//   CAVITIES  each run walks to its point and searches its cavity in the
+//             triangulation of the last iteration, which nobody writes
+//             meanwhile; it claims every tetrahedron it tests (those in
+//             conflict and those just outside) in a per-slot word;
+//   BALLS     a run whose claimed tetrahedra no run of smaller index claimed
+//             too fills its cavity; the others search the same point again
+//             in the next iteration.
+// So conflicts are decided by the cavities themselves, not by which region
+// a tetrahedron's vertices lie in, and no walk ever fails: on points
+// sampled from a surface, 93% of the partitioned engine's failures are
+// walks that meet a tetrahedron of another partition.  Outside tetrahedra
+// are claimed too because a ball rewrites their neighbour codes.
+//
+// A claim word holds (iteration, 255 - run, in conflict) and grows by an
+// atomic maximum, so every word ends holding its highest-priority claimer
+// whatever the timing; a run that sees or overwrites a claim of its
+// iteration marks the lower run as beaten.  Which points an iteration
+// inserts, and the slots each run takes (its own free list and fixed range
+// of fresh slots), follow from the input alone: the triangulation is the
+// same cell for cell for the same input and run count, whatever the thread
+// count and timing.
+//
+// Each thread runs a fixed share of the runs (a run's cavity is searched
+// and filled in the same cache) and publishes the steps it has finished.
+// A share that no thread has started when the first barrier has waited for
+// it a while (its TBB thread busy elsewhere) is taken by the waiting
+// thread, so a barrier never waits for a thread that is not there.
+//
+// Per point this engine costs about 1.4 times the sequential kernel (the
+// claim words are one more cache line per tested tetrahedron; the vertex
+// numbering of the ball cannot use the shared vertex scratch words): on 2
+// cores it is slower than the partitioned engine on every input measured,
+// which therefore stays the default (the manual's Parallel Insertion
+// section has the table).
+
+#ifndef CGAL_FDT3_INTERNAL_BARRIER_INSERTION_H
+#define CGAL_FDT3_INTERNAL_BARRIER_INSERTION_H
+
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Parallel_insertion.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Radix_sort.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <thread>
+#include <vector>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace CGAL {
+namespace Fast_Delaunay_triangulation_3_internal {
+
+// A directed edge of a cavity boundary and the new tetrahedron facet on it.
+struct Scratch_edge
+{
+  std::uint64_t key;
+  Facet_code facet;
+};
+
+// The run of points one ticket of the barrier engine advances.
+struct Barrier_run
+{
+  const Vertex_id* next = nullptr; // the point this run inserts next
+  const Vertex_id* end = nullptr;
+  Tet_id hint = 0;
+  std::vector<Tet_id> free;        // freed slots, taken first
+  Partition_slots slots;           // then its own range of fresh slots
+  Tet_id first_fresh_slot = 0;     // where that range starts
+  Insertion_scratch scratch;       // walk's random state, statistics, deltas
+  std::vector<Tet_id> cavity;      // found by CAVITIES, filled by BALLS
+  std::vector<Facet_code> facets;  // cavity boundary, as (cavity tetrahedron, facet)
+  std::vector<Boundary_facet> boundary; // the same facets as new tetrahedra, read by CAVITIES
+  std::size_t cavity_ghosts = 0;
+  bool large = false;              // more than 31 boundary vertices: glued by the edge hash
+  std::vector<Tet_id> ball;
+  std::vector<Scratch_edge> edges;
+  // Local numbers 1..31 of the boundary vertices, for the adjacency table:
+  // an open-addressing table stamped per point (the vertex records' scratch
+  // words are shared with other runs' cavities).
+  struct Numbered_vertex
+  {
+    Vertex_id v;
+    std::uint32_t stamp;
+    std::uint8_t number;
+  };
+  static constexpr unsigned numbering_size = 128;
+  Numbered_vertex numbering[numbering_size];
+  std::uint32_t stamp = 0;
+  unsigned numbered = 0;
+  bool has_cavity = false;         // CAVITIES left a cavity for BALLS
+  bool stalled = false;            // out of slots: the rest goes sequential
+  std::size_t retries = 0;         // points tried again after a run of smaller index won
+  std::atomic<bool> beaten{false}; // a run of smaller index claimed a tetrahedron of the cavity
+
+  bool done() const { return stalled || next == end; }
+};
+
+// One thread's place in the barrier engine, alone on its cache line: the
+// steps it has finished, published for the others' barrier waits.
+struct alignas(64) Barrier_participant
+{
+  std::atomic<int> taken{0};
+  std::atomic<std::uint64_t> steps_done{0};
+  int active_runs = 0; // runs with points left after its last BALLS step
+};
+
+class Barrier_insertion
+{
+public:
+  // Runs per thread (the paper's M2): more runs make the barriers rarer and
+  // the iterations' work more even, and cost memory for each run's lists.
+  static constexpr int default_runs_per_thread = 8;
+  // Below this many points per run a round is inserted sequentially.
+  static constexpr std::size_t min_points_per_run = 256;
+
+  Barrier_insertion(Flat_storage& mesh, const Static_filter& filter, const Sub_determinant_filter& sub_filter,
+                    bool timed)
+      : m_(mesh), filter_(filter), sub_filter_(sub_filter), timed_(timed)
+  {}
+
+  void set_runs_per_thread(int n) { runs_per_thread_ = std::max(1, std::min(n, 255)); }
+
+  // Inserts `points` (vertex ids whose records are written, in curve order)
+  // with `threads` threads; duplicate_of[v - first_new] receives the
+  // existing vertex for a duplicate.  Appends one row to `rounds` for the
+  // barrier iterations and one for the sequential finish, if any.
+  void insert(const std::vector<Vertex_id>& points, int threads, Vertex_id first_new,
+              std::vector<Vertex_id>& duplicate_of, Tet_id& hint, std::vector<Partition_round>& rounds,
+              Kernel_statistics& stats)
+  {
+    if(!m_.is_live(hint)) hint = m_.first_live_tet();
+    const int runs = std::min<int>(threads * runs_per_thread_, 255);
+    std::vector<Vertex_id> rest;
+    if(threads > 1 && points.size() >= min_points_per_run * std::size_t(runs)) {
+      const auto t0 = std::chrono::steady_clock::now();
+      Partition_round row;
+      row.points = points.size();
+      row.partitions = runs;
+      row.retried = insert_with_barriers(points, threads, runs, first_new, duplicate_of, hint, stats, rest);
+      row.inserted = points.size() - rest.size();
+      row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      rounds.push_back(row);
+    } else {
+      rest = points;
+    }
+    if(rest.empty()) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    Partition_round row;
+    row.points = row.inserted = rest.size();
+    insert_in_order(m_, rest, first_new, duplicate_of, hint, filter_, sub_filter_, timed_, stats);
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    rounds.push_back(row);
+  }
+
+private:
+  // Claim words: iteration (23 bits), 255 - run (8 bits), in conflict (1 bit).
+  static constexpr unsigned run_shift = 1, iteration_shift = 9;
+  static constexpr std::uint64_t max_iterations = (std::uint64_t(1) << 23) - 1;
+
+  static std::uint32_t claim_base(std::uint64_t iteration, std::size_t run)
+  {
+    return static_cast<std::uint32_t>((iteration << iteration_shift) | ((255 - run) << run_shift));
+  }
+  static int run_of_claim(std::uint32_t c) { return 255 - int((c >> run_shift) & 255u); }
+  static std::uint64_t iteration_of_claim(std::uint32_t c) { return c >> iteration_shift; }
+
+  // The barrier iterations over `points`; the points of runs that ran out
+  // of slots go to `rest`, and `hint` becomes a tetrahedron near the first
+  // of them.  Returns the number of cavities found again in a later
+  // iteration.
+  std::size_t insert_with_barriers(const std::vector<Vertex_id>& points, int threads, int runs,
+                                   Vertex_id first_new, std::vector<Vertex_id>& duplicate_of, Tet_id& hint,
+                                   Kernel_statistics& stats, std::vector<Vertex_id>& rest)
+  {
+    // Fresh slots: every run's worst case, fixed before the threads start.
+    std::vector<Barrier_run> run(static_cast<std::size_t>(runs));
+    std::vector<Tet_id> fresh_begin(runs + 1);
+    fresh_begin[0] = m_.number_of_slots();
+    for(int r = 0; r < runs; ++r) {
+      const std::size_t begin = chunk_begin(points.size(), runs, r), end = chunk_begin(points.size(), runs, r + 1);
+      run[r].next = points.data() + begin;
+      run[r].end = points.data() + end;
+      run[r].hint = hint;
+      run[r].scratch.timed = timed_;
+      fresh_begin[r + 1] = fresh_begin[r] + Partitioned_insertion::fresh_slots_per_point * (end - begin) + 4096;
+    }
+    m_.resize_tets(fresh_begin[runs], Flat_storage::New_slots::left_unwritten);
+    for(std::size_t k = 0; k < m_.free_tets.size(); ++k) run[k % runs].free.push_back(m_.free_tets[k]);
+    m_.free_tets.clear();
+    for(int r = 0; r < runs; ++r)
+    {
+      run[r].slots = Partition_slots{&run[r].free, fresh_begin[r], fresh_begin[r + 1], &m_.tets};
+      run[r].first_fresh_slot = fresh_begin[r];
+    }
+    claims_.assign(fresh_begin[runs], 0);
+    first_fresh_ = fresh_begin[0];
+
+    // Participant slot k runs the k-th share of the runs on one thread, so a
+    // run's cavity is searched and filled in the same cache.  Steps alternate
+    // CAVITIES (even) and BALLS (odd); after each, every slot publishes the
+    // steps it has finished and waits for the others.  A slot that no thread
+    // has taken while the first barrier waits for it (its TBB thread busy
+    // elsewhere) is taken by the waiting thread: only the first barrier can
+    // wait for a slot that has not started.
+    std::vector<Barrier_participant> slot(static_cast<std::size_t>(threads));
+    auto runs_of = [&](int k) {
+      return std::make_pair(chunk_begin(runs, threads, k), chunk_begin(runs, threads, k + 1));
+    };
+    auto participant = [&](int c) {
+      int free_slot = 0;
+      if(!slot[c].taken.compare_exchange_strong(free_slot, 1)) return;
+      std::vector<int> mine(1, c);
+      with_vector_paths([&](auto paths) {
+        typedef Delaunay_kernel<Sequential_ownership, Mesh_slots, Walk_to_the_end, decltype(paths)> Kernel;
+        auto run_step = [&](int k, std::uint64_t step) {
+          int active_runs = 0;
+          for(std::size_t r = runs_of(k).first; r < runs_of(k).second; ++r) {
+            Barrier_run& me = run[r];
+            Kernel kernel(m_, me.scratch, Mesh_slots{&m_}, filter_, sub_filter_);
+            if(step % 2 == 0) {
+              if(!me.done()) find_cavity(kernel, run, r, step / 2 + 1, duplicate_of, first_new);
+            } else if(me.has_cavity) {
+              me.has_cavity = false;
+              if(me.beaten.load(std::memory_order_relaxed)) {
+                me.beaten.store(false, std::memory_order_relaxed);
+                ++me.retries;
+              } else {
+                fill_ball(me);
+              }
+            }
+            active_runs += me.done() ? 0 : 1;
+          }
+          // Read by the others after this step's barrier, rewritten only two
+          // steps later, past the next barrier, which they must cross first.
+          if(step % 2 == 1) slot[k].active_runs = active_runs;
+          slot[k].steps_done.store(step + 1, std::memory_order_release);
+        };
+        for(std::uint64_t step = 0;; ++step) {
+          for(std::size_t j = 0; j < mine.size(); ++j) run_step(mine[j], step);
+          const auto waiting_since = std::chrono::steady_clock::now();
+          for(int k = 0; k < threads; ++k) {
+            unsigned spins = 0;
+            while(slot[k].steps_done.load(std::memory_order_acquire) <= step) {
+              if(step == 0 && spins % 1024 == 1023 &&
+                 std::chrono::steady_clock::now() - waiting_since > std::chrono::milliseconds(2)) {
+                int untaken = 0;
+                if(slot[k].taken.compare_exchange_strong(untaken, 1)) {
+                  mine.push_back(k);
+                  run_step(k, step);
+                }
+              }
+              pause(spins);
+            }
+          }
+          if(step % 2 == 1) {
+            int active_runs = 0;
+            for(int k = 0; k < threads; ++k) active_runs += slot[k].active_runs;
+            if(active_runs == 0 || step / 2 + 2 >= max_iterations) return;
+          }
+        }
+      });
+    };
+    for_each_chunk(threads, participant);
+
+    // Unused fresh slots and the runs' free lists go back to the mesh; the
+    // points of stalled runs are left for the sequential finish.
+    Tet_id end = fresh_begin[0];
+    std::size_t retried = 0;
+    hint = run[0].hint;
+    for(int r = 0; r < runs; ++r) {
+      Barrier_run& me = run[r];
+      m_.live_tets += me.scratch.live_delta;
+      m_.ghost_tets += me.scratch.ghost_delta;
+      stats.add(me.scratch.stats);
+      m_.free_tets.insert(m_.free_tets.end(), me.free.begin(), me.free.end());
+      if(r + 1 < runs) {
+        for(Tet_id t = me.slots.next_fresh; t < fresh_begin[r + 1]; ++t) {
+          m_.tets[t].v[0] = mark_bit; // never written: free
+          m_.free_tets.push_back(t);
+        }
+      } else {
+        end = me.slots.next_fresh;
+      }
+      if(rest.empty() && me.next != me.end) hint = me.hint;
+      rest.insert(rest.end(), me.next, me.end);
+      retried += me.retries;
+    }
+    m_.resize_tets(end, Flat_storage::New_slots::left_unwritten);
+    if(!m_.is_live(hint)) hint = m_.first_live_tet();
+    claims_.clear();
+    claims_.shrink_to_fit();
+    return retried;
+  }
+
+  static void pause(unsigned& spins)
+  {
+    if(++spins % 1024 != 0) {
+#if defined(__x86_64__) || defined(__i386__)
+      _mm_pause();
+#endif
+    } else {
+      std::this_thread::yield();
+    }
+  }
+
+  // The claim word of t rises to `value` unless a run of smaller index holds
+  // it in this iteration; whichever of two runs has the larger index is
+  // marked beaten.
+  void claim(Tet_id t, std::uint32_t value, std::vector<Barrier_run>& run, Barrier_run& me)
+  {
+    std::uint32_t* word = &claims_[t];
+    std::uint32_t old = __atomic_load_n(word, __ATOMIC_RELAXED);
+    while(old < value) {
+      if(__atomic_compare_exchange_n(word, &old, value, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+        if(iteration_of_claim(old) == iteration_of_claim(value))
+          run[run_of_claim(old)].beaten.store(true, std::memory_order_relaxed);
+        return;
+      }
+    }
+    if((old >> run_shift) > (value >> run_shift)) me.beaten.store(true, std::memory_order_relaxed);
+  }
+
+  // Whether this run's search has already tested t, and with which outcome
+  // (1 in conflict, 0 not, -1 not tested), when a run of smaller index
+  // holds t's word: the run's own lists say (rare, only where cavities
+  // meet).  The queue holds the facet codes the search entered through.
+  __attribute__((noinline)) int own_outcome(const Barrier_run& me, Tet_id t, std::size_t queued,
+                                            std::size_t found) const
+  {
+    for(std::size_t k = 0; k < queued; ++k)
+      if(tet_of(static_cast<Facet_code>(me.cavity[k])) == t) return 1;
+    for(std::size_t k = 0; k < found; ++k)
+      if(tet_of(m_.neighbor_code(me.facets[k])) == t) return 0;
+    return -1;
+  }
+
+  // CAVITIES for run r: walk, duplicate check, breadth-first search of the
+  // tetrahedra in conflict, claiming each one tested.  Reads the mesh only.
+  template <class Kernel>
+  void find_cavity(Kernel& kernel, std::vector<Barrier_run>& run, std::size_t r, std::uint64_t iteration,
+                   std::vector<Vertex_id>& duplicate_of, Vertex_id first_new)
+  {
+    Barrier_run& me = run[r];
+    const Vertex_id v = *me.next;
+    const double* p = m_.point(v);
+    if(!m_.is_live(me.hint)) me.hint = some_live_tet(run);
+    const Tet_id start = kernel.walk(me.hint, p);
+    me.hint = start;
+    if(!m_.is_ghost(start)) {
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_id w = m_.vertex(start, i);
+        if(same_point(m_.point(w), p)) {
+          duplicate_of[v - first_new] = w;
+          ++me.scratch.stats.duplicates;
+          ++me.next;
+          return;
+        }
+      }
+    }
+    const std::uint32_t base = claim_base(iteration, r);
+    // As in the kernel's search, whether a neighbour is in conflict steers
+    // no branch: it is written both as the next queue entry (the facet code
+    // it was entered through) and as the next boundary facet, and only the
+    // counts move.  Both lists have room for one more pop's four entries.
+    std::vector<Tet_id>& queue = me.cavity;
+    std::vector<Facet_code>& facets = me.facets;
+    if(queue.size() < 64) queue.resize(64);
+    if(facets.size() < 64) facets.resize(64);
+    std::size_t queued = 0, found = 0;
+    auto visit = [&](Tet_id t, int f) __attribute__((always_inline)) {
+      const Facet_code code = m_.neighbor_code(t, f);
+      const Tet_id u = tet_of(code);
+      const std::uint32_t held = __atomic_load_n(&claims_[u], __ATOMIC_RELAXED);
+      bool conflict;
+      if((held >> run_shift) == (base >> run_shift)) {
+        if(held & 1u) return; // in the cavity already
+        conflict = false;     // tested already, through another facet
+      } else {
+        const int known = (held >> run_shift) > (base >> run_shift) ? own_outcome(me, u, queued, found) : -1;
+        if(known == 1) return;
+        conflict = known == 0 ? false : kernel.in_conflict(u, p);
+        if(known < 0) {
+          ++me.scratch.stats.conflict_tests;
+          claim(u, base | std::uint32_t(conflict), run, me);
+          const Facet_code* n = m_.tets[u].n;
+          for(int g = 0; g < 4; ++g) {
+            __builtin_prefetch(&m_.tets[tet_of(n[g])]);
+            __builtin_prefetch(&claims_[tet_of(n[g])]);
+          }
+        }
+      }
+      queue[queued] = code;
+      queued += conflict;
+      facets[found] = facet_code(t, f);
+      found += !conflict;
+    };
+    claim(start, base | 1u, run, me);
+    queue[queued++] = facet_code(start, 0);
+    for(int f = 0; f < 4; ++f) visit(start, f);
+    for(std::size_t k = 1; k < queued; ++k) {
+      if(queued + 3 > queue.size()) queue.resize(2 * queue.size());
+      if(found + 3 > facets.size()) facets.resize(2 * facets.size());
+      const Facet_code entered = static_cast<Facet_code>(queue[k]);
+      const Tet_id t = tet_of(entered);
+      const int back = facet_of(entered);
+      visit(t, (back + 1) & 3);
+      visit(t, (back + 2) & 3);
+      visit(t, (back + 3) & 3);
+    }
+    for(std::size_t k = 0; k < queued; ++k) queue[k] = tet_of(static_cast<Facet_code>(queue[k]));
+    queue.resize(queued);
+    facets.resize(found);
+    record_boundary(me);
+    me.has_cavity = true;
+  }
+
+  // The boundary facets as new tetrahedra (p, a, b, c), with the ghost last,
+  // their outside neighbours and local vertex numbers, read while the
+  // cavity's records are in cache.
+  void record_boundary(Barrier_run& me)
+  {
+    if(++me.stamp == 0) {
+      for(auto& entry : me.numbering) entry.stamp = 0;
+      me.stamp = 1;
+    }
+    me.numbered = 0;
+    me.large = false;
+    const std::size_t facets = me.facets.size();
+    me.boundary.resize(facets);
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Facet_code code = me.facets[k];
+      const Vertex_id* tv = m_.vertex_ids(tet_of(code));
+      const int f = facet_of(code);
+      Vertex_id a = tv[facet_vertex[f][0]], b = tv[facet_vertex[f][1]], c = tv[facet_vertex[f][2]];
+      if(a == ghost_vertex) {
+        a = b; b = c; c = ghost_vertex;
+      } else if(b == ghost_vertex) {
+        b = a; a = c; c = ghost_vertex;
+      }
+      Boundary_facet& record = me.boundary[k];
+      record.v[0] = a;
+      record.v[1] = b;
+      record.v[2] = c;
+      record.local[0] = number_vertex(me, a);
+      record.local[1] = number_vertex(me, b);
+      record.local[2] = number_vertex(me, c);
+      record.outside = m_.neighbor_code(code);
+    }
+    me.cavity_ghosts = 0;
+    for(Tet_id t : me.cavity) me.cavity_ghosts += m_.is_ghost(t) ? 1 : 0;
+  }
+
+  static std::uint8_t number_vertex(Barrier_run& me, Vertex_id v)
+  {
+    if(v == ghost_vertex) return 0;
+    constexpr unsigned mask = Barrier_run::numbering_size - 1;
+    unsigned h = (v * 2654435761u) >> 25;
+    while(me.numbering[h].stamp == me.stamp && me.numbering[h].v != v) h = (h + 1) & mask;
+    if(me.numbering[h].stamp == me.stamp) return me.numbering[h].number;
+    if(me.numbered + 1 >= Insertion_scratch::table_size) {
+      me.large = true;
+      return Insertion_scratch::table_size - 1;
+    }
+    me.numbering[h] = {v, me.stamp, std::uint8_t(++me.numbered)};
+    return me.numbering[h].number;
+  }
+
+  // A live tetrahedron to walk from when another run's ball deleted this
+  // run's hint (rare: runs are far apart on the curve).  Fresh slots that no
+  // run has written yet hold garbage and are skipped.
+  Tet_id some_live_tet(const std::vector<Barrier_run>& run) const
+  {
+    for(Tet_id t = 0; t < first_fresh_; ++t)
+      if(m_.is_live(t)) return t;
+    for(const Barrier_run& r : run)
+      for(Tet_id t = r.first_fresh_slot; t < r.slots.next_fresh; ++t)
+        if(m_.is_live(t)) return t;
+    CGAL_assertion_msg(false, "no live tetrahedron");
+    return 0;
+  }
+
+  // BALLS for one run whose cavity no run of smaller index touched: the
+  // cavity becomes the new vertex joined to its boundary facets.  When the
+  // run's slots cannot hold the ball, the mesh stays as it is and the run
+  // stops: its points go to the sequential finish.
+  void fill_ball(Barrier_run& me)
+  {
+    const Vertex_id v = *me.next;
+    const std::size_t facets = me.facets.size(), cells = me.cavity.size();
+    if(facets > cells && !me.slots.reserve(facets - cells)) {
+      me.stalled = true;
+      return;
+    }
+    me.ball.resize(facets);
+    const std::size_t reused = std::min(facets, cells);
+    std::copy(me.cavity.begin(), me.cavity.begin() + reused, me.ball.begin());
+    for(std::size_t k = reused; k < cells; ++k) {
+      m_.mark_free(me.cavity[k]);
+      me.slots.give(me.cavity[k]);
+    }
+    for(std::size_t k = reused; k < facets; ++k) me.ball[k] = me.slots.take();
+
+    std::size_t new_ghosts = 0;
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = me.boundary[k];
+      const Tet_id t = me.ball[k];
+      Tet_record& record = m_.tets[t];
+      record.v[0] = v; record.v[1] = b.v[0]; record.v[2] = b.v[1]; record.v[3] = b.v[2];
+      record.n[0] = b.outside;
+      m_.neighbor_code(b.outside) = facet_code(t, 0);
+      new_ghosts += b.v[2] == ghost_vertex ? 1 : 0;
+      if(m_.with_sub_determinants) update_sub_determinants(m_, t);
+    }
+    if(me.large) glue_with_edge_hash(me);
+    else glue_with_table(me);
+    me.scratch.live_delta += static_cast<std::ptrdiff_t>(facets) - static_cast<std::ptrdiff_t>(cells);
+    me.scratch.ghost_delta += static_cast<std::ptrdiff_t>(new_ghosts) - static_cast<std::ptrdiff_t>(me.cavity_ghosts);
+    ++me.scratch.stats.inserted;
+    me.scratch.stats.cavity_tets += cells;
+    me.scratch.stats.ball_tets += facets;
+    ++me.next;
+    me.hint = me.next != me.end ? nearest_ball_tet(me, m_.point(*me.next)) : me.ball.front();
+  }
+
+  // Facet i of a new tetrahedron holds the point and the boundary edge
+  // opposite b.v[i - 1]; across it lies the new tetrahedron with the same
+  // edge reversed: directed edges in an open-addressing table.
+  void glue_with_table(Barrier_run& me) const
+  {
+    constexpr unsigned n = Insertion_scratch::table_size;
+    Facet_code* table = me.scratch.edge_table;
+    const std::size_t facets = me.boundary.size();
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = me.boundary[k];
+      const unsigned a = b.local[0], bb = b.local[1], c = b.local[2];
+      const Tet_id t = me.ball[k];
+      table[bb * n + c] = facet_code(t, 1);
+      table[c * n + a] = facet_code(t, 2);
+      table[a * n + bb] = facet_code(t, 3);
+    }
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = me.boundary[k];
+      const unsigned a = b.local[0], bb = b.local[1], c = b.local[2];
+      Facet_code* nb = m_.tets[me.ball[k]].n;
+      nb[1] = table[c * n + bb];
+      nb[2] = table[a * n + c];
+      nb[3] = table[bb * n + a];
+    }
+  }
+
+  // The same for a cavity with more than 31 boundary vertices.
+  void glue_with_edge_hash(Barrier_run& me) const
+  {
+    const std::size_t facets = me.boundary.size();
+    std::size_t capacity = 64;
+    while(capacity < 6 * facets) capacity *= 2;
+    const int shift = 64 - __builtin_ctzll(capacity);
+    constexpr std::uint64_t empty = ~std::uint64_t(0);
+    me.edges.assign(capacity, Scratch_edge{empty, 0});
+    auto key = [](Vertex_id from, Vertex_id to) { return (std::uint64_t(from) << 32) | to; };
+    auto slot_of = [&](std::uint64_t k) { return std::size_t((k * 0x9e3779b97f4a7c15ull) >> shift); };
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = me.boundary[k];
+      const Tet_id t = me.ball[k];
+      const std::uint64_t keys[3] = {key(b.v[1], b.v[2]), key(b.v[2], b.v[0]), key(b.v[0], b.v[1])};
+      for(int i = 0; i < 3; ++i) {
+        std::size_t s = slot_of(keys[i]);
+        while(me.edges[s].key != empty) s = (s + 1) & (capacity - 1);
+        me.edges[s] = Scratch_edge{keys[i], facet_code(t, i + 1)};
+      }
+    }
+    for(std::size_t k = 0; k < facets; ++k) {
+      const Boundary_facet& b = me.boundary[k];
+      Facet_code* n = m_.tets[me.ball[k]].n;
+      const std::uint64_t keys[3] = {key(b.v[2], b.v[1]), key(b.v[0], b.v[2]), key(b.v[1], b.v[0])};
+      for(int i = 0; i < 3; ++i) {
+        std::size_t s = slot_of(keys[i]);
+        while(me.edges[s].key != keys[i]) {
+          CGAL_assertion(me.edges[s].key != empty);
+          s = (s + 1) & (capacity - 1);
+        }
+        n[i + 1] = me.edges[s].facet;
+      }
+    }
+  }
+
+  // The new tetrahedron whose boundary facet has its centroid nearest to q
+  // (the run's next point), where the next walk starts.
+  Tet_id nearest_ball_tet(const Barrier_run& me, const double* q) const
+  {
+    Tet_id best = me.ball.front();
+    double best_distance = std::numeric_limits<double>::infinity();
+    for(std::size_t k = 0; k < me.boundary.size(); ++k) {
+      const Boundary_facet& b = me.boundary[k];
+      if(b.v[2] == ghost_vertex) continue;
+      const double *a = m_.point(b.v[0]), *c = m_.point(b.v[1]), *d = m_.point(b.v[2]);
+      const double x = a[0] + c[0] + d[0] - 3 * q[0], y = a[1] + c[1] + d[1] - 3 * q[1],
+                   z = a[2] + c[2] + d[2] - 3 * q[2];
+      const double distance = x * x + y * y + z * z;
+      if(distance < best_distance) {
+        best_distance = distance;
+        best = me.ball[k];
+      }
+    }
+    return best;
+  }
+
+  Flat_storage& m_;
+  Static_filter filter_;
+  Sub_determinant_filter sub_filter_;
+  bool timed_;
+  int runs_per_thread_ = default_runs_per_thread;
+  std::vector<std::uint32_t> claims_; // per slot, during insert_with_barriers
+  Tet_id first_fresh_ = 0;
+};
+
+} // namespace Fast_Delaunay_triangulation_3_internal
+} // namespace CGAL
+
+#endif // CGAL_FDT3_INTERNAL_BARRIER_INSERTION_H
