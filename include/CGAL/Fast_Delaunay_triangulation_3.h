@@ -172,14 +172,15 @@ public:
   // 0 (the default with Parallel_tag) means one partition per thread of the
   // caller's arena; the default with Sequential_tag is 1.
   void set_number_of_threads(int n) { threads_ = std::max(0, std::min(n, 255)); }
+  int number_of_threads() const { return threads_; }
   // Which parallel engine inserts a range on several threads: the
   // Moore-partitioned one of the paper's §3 (the default), or the
   // barrier-synchronised two-level kernel of "Multi-threaded mesh generation"
-  // (internal/Barrier_insertion.h).  Both build the same cells.
+  // (internal/Barrier_insertion.h), slower on 2 cores but on scans, where
+  // they tie.  Both build the same cells.
   typedef Fast_Delaunay_triangulation_3_internal::Triangulation_core::Parallel_engine Parallel_engine;
   void set_parallel_engine(Parallel_engine engine) { anchor_->core.parallel_engine = engine; }
   Parallel_engine parallel_engine() const { return anchor_->core.parallel_engine; }
-  int number_of_threads() const { return threads_; }
   // Called during every insertion of a range of n > 1 points with (points
   // settled, n): (0, n) once the points are sorted, then increasing values
   // every few thousand points (in the partitioned rounds an estimate from

@@ -488,7 +488,7 @@ void swap(Fast_Delaunay_triangulation_3& other) noexcept;
 
 /*!
 Removes all vertices and cells; the dimension becomes -1. The options
-(seed, phase timing, sub-determinants) are kept.
+(seed, phase timing, sub-determinants, parallel engine) are kept.
 */
 void clear();
 
@@ -531,6 +531,27 @@ void set_sub_determinants(bool on);
 Whether sub-determinants are stored.
 */
 bool sub_determinants() const;
+
+/*!
+The parallel engines of a range insertion on several threads.
+*/
+enum class Parallel_engine {
+  partitioned, ///< the paper's Moore partitions, lock-free (the default)
+  barrier      ///< the two-level barrier-synchronised kernel of "Multi-threaded mesh generation"
+};
+
+/*!
+Chooses the engine of later range insertions on several threads (Section
+\ref Fast_Delaunay_triangulation_3Barrier of the manual). Both build the same
+cells; for the same points and thread count each enumerates them in an order
+of its own that does not change from run to run.
+*/
+void set_parallel_engine(Parallel_engine engine);
+
+/*!
+The engine chosen by `set_parallel_engine()`.
+*/
+Parallel_engine parallel_engine() const;
 
 /// @}
 

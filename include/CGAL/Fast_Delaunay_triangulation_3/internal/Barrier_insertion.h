@@ -90,24 +90,24 @@ struct Barrier_run
   bool large = false;              // more than 31 boundary vertices: glued by the edge hash
   std::vector<Tet_id> ball;
   std::vector<Scratch_edge> edges;
-  // Local numbers 1..31 of the boundary vertices, for the adjacency table:
-  // an open-addressing table stamped per point (the vertex records' scratch
-  // words are shared with other runs' cavities).
-  struct Numbered_vertex
-  {
-    Vertex_id v;
-    std::uint32_t stamp;
-    std::uint8_t number;
-  };
+  // Local numbers 1..31 of the boundary vertices, for the adjacency table,
+  // in an open-addressing table of the run's own (the vertex records'
+  // scratch words are shared with other runs' cavities); empty keys are the
+  // ghost vertex, and the keys used are emptied after each cavity.
   static constexpr unsigned numbering_size = 128;
-  Numbered_vertex numbering[numbering_size];
-  std::uint32_t stamp = 0;
+  // Keys stored at most: the table stays sparse enough to probe, and past
+  // 31 vertices the numbers are saturated anyway.
+  static constexpr unsigned numbering_limit = 96;
+  Vertex_id numbering_key[numbering_size];
+  std::uint8_t numbering_value[numbering_size];
+  std::uint8_t numbering_used[numbering_size];
   unsigned numbered = 0;
   bool has_cavity = false;         // CAVITIES left a cavity for BALLS
   bool stalled = false;            // out of slots: the rest goes sequential
   std::size_t retries = 0;         // points tried again after a run of smaller index won
   std::atomic<bool> beaten{false}; // a run of smaller index claimed a tetrahedron of the cavity
 
+  Barrier_run() { std::fill(std::begin(numbering_key), std::end(numbering_key), ghost_vertex); }
   bool done() const { return stalled || next == end; }
 };
 
@@ -435,10 +435,6 @@ private:
   // cavity's records are in cache.
   void record_boundary(Barrier_run& me)
   {
-    if(++me.stamp == 0) {
-      for(auto& entry : me.numbering) entry.stamp = 0;
-      me.stamp = 1;
-    }
     me.numbered = 0;
     me.large = false;
     const std::size_t facets = me.facets.size();
@@ -462,23 +458,50 @@ private:
       record.local[2] = number_vertex(me, c);
       record.outside = m_.neighbor_code(code);
     }
+    me.large = me.numbered >= Insertion_scratch::table_size;
+    for(unsigned i = 0; i < me.numbered; ++i) me.numbering_key[me.numbering_used[i]] = ghost_vertex;
     me.cavity_ghosts = 0;
     for(Tet_id t : me.cavity) me.cavity_ghosts += m_.is_ghost(t) ? 1 : 0;
   }
 
+  // Whether v is new on the boundary is a branch no predictor learns (as in
+  // the kernel's numbering): when v's slot holds v or nothing, which is
+  // nearly always the case, v is written there either way and only the
+  // count moves for a new one.  Past 31 vertices the numbers saturate and
+  // the ball takes the edge hash.
   static std::uint8_t number_vertex(Barrier_run& me, Vertex_id v)
   {
     if(v == ghost_vertex) return 0;
+    static_assert(Barrier_run::numbering_size == 128, "7-bit hash");
+    const unsigned h = (v * 2654435761u) >> 25;
+    const Vertex_id key = me.numbering_key[h];
+    if((key != v && key != ghost_vertex) || me.numbered >= Barrier_run::numbering_limit)
+      return number_vertex_after_collision(me, v, h);
+    const bool fresh = key != v;
+    me.numbering_key[h] = v;
+    me.numbering_used[me.numbered] = static_cast<std::uint8_t>(h);
+    me.numbered += fresh;
+    const unsigned number = std::min<unsigned>(me.numbered, Insertion_scratch::table_size - 1);
+    me.numbering_value[h] = fresh ? static_cast<std::uint8_t>(number) : me.numbering_value[h];
+    return me.numbering_value[h];
+  }
+
+  __attribute__((noinline)) static std::uint8_t number_vertex_after_collision(Barrier_run& me, Vertex_id v,
+                                                                              unsigned h)
+  {
     constexpr unsigned mask = Barrier_run::numbering_size - 1;
-    unsigned h = (v * 2654435761u) >> 25;
-    while(me.numbering[h].stamp == me.stamp && me.numbering[h].v != v) h = (h + 1) & mask;
-    if(me.numbering[h].stamp == me.stamp) return me.numbering[h].number;
-    if(me.numbered + 1 >= Insertion_scratch::table_size) {
-      me.large = true;
-      return Insertion_scratch::table_size - 1;
+    for(;;) {
+      const Vertex_id key = me.numbering_key[h];
+      if(key == v) return me.numbering_value[h];
+      if(key == ghost_vertex) break;
+      h = (h + 1) & mask;
     }
-    me.numbering[h] = {v, me.stamp, std::uint8_t(++me.numbered)};
-    return me.numbering[h].number;
+    if(me.numbered >= Barrier_run::numbering_limit) return Insertion_scratch::table_size - 1;
+    me.numbering_key[h] = v;
+    me.numbering_used[me.numbered++] = static_cast<std::uint8_t>(h);
+    me.numbering_value[h] =
+        static_cast<std::uint8_t>(std::min<unsigned>(me.numbered, Insertion_scratch::table_size - 1));
+    return me.numbering_value[h];
   }
 
   // A live tetrahedron to walk from when another run's ball deleted this
