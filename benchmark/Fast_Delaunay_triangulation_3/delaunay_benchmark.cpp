@@ -312,7 +312,8 @@ Engine_result run_fast_parallel(const Points& points, int threads)
   return insert_and_count(triangulation, points);
 }
 
-// The same with the barrier-synchronised engine (the seed paper's two-level kernel) instead of the partitions.
+// The same with the barrier-synchronised engine (the two-level kernel of "Multi-threaded mesh generation") instead
+// of the partitions.
 Engine_result run_fast_barrier(const Points& points, int threads)
 {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));

@@ -176,8 +176,9 @@ public:
   // Which parallel engine inserts a range on several threads: the
   // Moore-partitioned one of the paper's §3 (the default), or the
   // barrier-synchronised two-level kernel of "Multi-threaded mesh generation"
-  // (internal/Barrier_insertion.h), slower on 2 cores but on scans, where
-  // they tie.  Both build the same cells.
+  // (internal/Barrier_insertion.h), which ties with it on points sampled
+  // from a surface and is slower elsewhere (2 cores).  Both build the same
+  // cells.
   typedef Fast_Delaunay_triangulation_3_internal::Triangulation_core::Parallel_engine Parallel_engine;
   void set_parallel_engine(Parallel_engine engine) { anchor_->core.parallel_engine = engine; }
   Parallel_engine parallel_engine() const { return anchor_->core.parallel_engine; }

@@ -68,8 +68,8 @@ TEST_P(Barrier_agreement, SameCellsAsCgal)
 
 std::vector<Case> cases()
 {
-  // 3 threads (24 runs, cut unevenly) on two inputs only: each case takes
-  // about 5 s under ThreadSanitizer.
+  // 3 threads (24 runs) on two inputs only: each case takes about 5 s under
+  // ThreadSanitizer.
   return {{"uniform", 2}, {"uniform", 3}, {"sphere", 2}, {"grid", 2}, {"duplicates", 2}, {"shell", 3}, {"torus", 2}};
 }
 
@@ -104,20 +104,52 @@ TEST(Barrier_insertion, ReproducibleCellForCell)
 // with the in-sphere sub-determinants cached (written by the balls).
 TEST(Barrier_insertion, IntoNonEmptyTriangulationWithSubDeterminants)
 {
-  const std::vector<Point> points = to_points<Point>(make_points("gauss", 2 * points_per_case, 33));
+  const std::size_t half = points_per_case / 2;
+  const std::vector<Point> points = to_points<Point>(make_points("gauss", 2 * half, 33));
   Fast_dt fast;
   fast.set_sub_determinants(true);
   fast.set_number_of_threads(2);
   fast.set_parallel_engine(Fast_dt::Parallel_engine::barrier);
-  fast.insert(points.begin(), points.begin() + points_per_case);
+  fast.insert(points.begin(), points.begin() + half);
   fast.remove(fast.finite_vertices_begin());
-  fast.insert(points.begin() + points_per_case, points.end());
-  EXPECT_GT(barrier_counts(fast).first, points_per_case / 2);
+  fast.insert(points.begin() + half, points.end());
+  EXPECT_GT(barrier_counts(fast).first, half / 2);
   ASSERT_TRUE(fast.is_valid(true));
   std::vector<Point> kept;
   for(auto v = fast.finite_vertices_begin(); v != fast.finite_vertices_end(); ++v) kept.push_back(v->point());
   const Cgal_dt cgal(kept.begin(), kept.end());
-  EXPECT_EQ(kept.size(), 2 * points_per_case - 1);
+  EXPECT_EQ(kept.size(), 2 * half - 1);
+  EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+}
+
+// A progress callback that throws (a user cancelling a long insertion) is
+// called from inside the barrier iterations, where the other thread waits at
+// a barrier: the exception reaches the caller, and the triangulation can be
+// cleared and used again.
+TEST(Barrier_insertion, ExceptionInAThreadReachesTheCaller)
+{
+  // Progress is reported every 65,536 points of the iterations, which the
+  // last BRIO round of 80,000 points reaches.
+  const std::vector<Point> points = to_points<Point>(make_points("uniform", 80000, 35));
+  Fast_dt fast;
+  fast.set_number_of_threads(2);
+  fast.set_parallel_engine(Fast_dt::Parallel_engine::barrier);
+  struct Cancelled {};
+  bool cancelled = false;
+  fast.set_progress([&](std::size_t done, std::size_t total) {
+    if(done > total / 4 && done < total && !cancelled) {
+      cancelled = true;
+      throw Cancelled();
+    }
+  });
+  EXPECT_THROW(fast.insert(points.begin(), points.end()), Cancelled);
+  EXPECT_TRUE(cancelled);
+  fast.clear();
+  fast.set_progress({});
+  const std::vector<Point> some(points.begin(), points.begin() + 20000);
+  fast.insert(some.begin(), some.end());
+  ASSERT_TRUE(fast.is_valid());
+  const Cgal_dt cgal(some.begin(), some.end());
   EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
 }
 

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -592,9 +593,10 @@ TEST(InsertionProgress, IncreasesToTheTotalAndChangesNothing)
   for(const fdt3_test::Xyz& p : fdt3_test::uniform_points(20000)) points.emplace_back(p.x, p.y, p.z);
   points.insert(points.end(), points.begin(), points.begin() + 100); // duplicates
   Cgal_dt cgal(points.begin(), points.end());
-  for(int threads : {1, 2}) {
+  for(int threads : {1, 2, -2}) { // -2: 2 threads, the barrier engine
     Fast_dt tr;
-    tr.set_number_of_threads(threads);
+    tr.set_number_of_threads(std::abs(threads));
+    if(threads < 0) tr.set_parallel_engine(Fast_dt::Parallel_engine::barrier);
     std::vector<std::pair<std::size_t, std::size_t>> calls;
     tr.set_progress([&](std::size_t done, std::size_t total) { calls.emplace_back(done, total); });
     tr.insert(points.begin(), points.end());

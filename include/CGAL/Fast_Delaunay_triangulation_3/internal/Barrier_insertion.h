@@ -27,8 +27,8 @@
 // iteration marks the lower run as beaten.  Which points an iteration
 // inserts, and the slots each run takes (its own free list and fixed range
 // of fresh slots), follow from the input alone: the triangulation is the
-// same cell for cell for the same input and run count, whatever the thread
-// count and timing.
+// same cell for cell for the same input and thread count, whatever the
+// timing.
 //
 // Each thread runs a fixed share of the runs (a run's cavity is searched
 // and filled in the same cache) and publishes the steps it has finished.
@@ -36,12 +36,16 @@
 // it a while (its TBB thread busy elsewhere) is taken by the waiting
 // thread, so a barrier never waits for a thread that is not there.
 //
-// Per point this engine costs about 1.4 times the sequential kernel (the
+// Per point this engine costs about 1.2 times the sequential kernel (the
 // claim words are one more cache line per tested tetrahedron; the vertex
-// numbering of the ball cannot use the shared vertex scratch words): on 2
-// cores it is slower than the partitioned engine on every input measured,
-// which therefore stays the default (the manual's Parallel Insertion
-// section has the table).
+// numbering of the ball cannot use the shared vertex scratch words), and
+// its threads wait for each other at every barrier.  On 2 cores it ties with the partitioned engine on points sampled from a surface
+// and is slower on the other inputs measured, so the partitioned engine
+// stays the default (the manual's Parallel Insertion section has the table).
+//
+// An exception in one thread (an assertion, std::bad_alloc) stops the others
+// at their next barrier and is thrown again by insert(); the triangulation
+// is then left incomplete.
 
 #ifndef CGAL_FDT3_INTERNAL_BARRIER_INSERTION_H
 #define CGAL_FDT3_INTERNAL_BARRIER_INSERTION_H
@@ -55,7 +59,10 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <exception>
+#include <functional>
 #include <limits>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -73,7 +80,7 @@ struct Scratch_edge
   Facet_code facet;
 };
 
-// The run of points one ticket of the barrier engine advances.
+// One run of points of the barrier engine and what its current point needs.
 struct Barrier_run
 {
   const Vertex_id* next = nullptr; // the point this run inserts next
@@ -135,11 +142,19 @@ public:
   {}
 
   void set_runs_per_thread(int n) { runs_per_thread_ = std::max(1, std::min(n, 255)); }
+  void set_vertices_in_mesh(std::size_t n) { vertices_in_mesh_ = n; }
+  // Called with the points of insert()'s call settled so far: every
+  // Partitioned_insertion::progress_step points of the sequential parts, and
+  // about as often during the barrier iterations (there an estimate: run 0's
+  // share done times the runs; called by the thread that runs run 0).
+  void set_progress(std::function<void(std::size_t)> progress) { progress_ = std::move(progress); }
 
   // Inserts `points` (vertex ids whose records are written, in curve order)
   // with `threads` threads; duplicate_of[v - first_new] receives the
   // existing vertex for a duplicate.  Appends one row to `rounds` for the
-  // barrier iterations and one for the sequential finish, if any.
+  // barrier iterations and one for the sequential finish, if any.  The
+  // rounds of fewer than 256 points per run are sequential; runs are capped
+  // at 255 (the claim word's field).
   void insert(const std::vector<Vertex_id>& points, int threads, Vertex_id first_new,
               std::vector<Vertex_id>& duplicate_of, Tet_id& hint, std::vector<Partition_round>& rounds,
               Kernel_statistics& stats)
@@ -152,10 +167,13 @@ public:
       Partition_round row;
       row.points = points.size();
       row.partitions = runs;
+      row.mesh_vertices = vertices_in_mesh_;
       row.retried = insert_with_barriers(points, threads, runs, first_new, duplicate_of, hint, stats, rest);
       row.inserted = points.size() - rest.size();
       row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      vertices_in_mesh_ += row.inserted;
       rounds.push_back(row);
+      if(progress_) progress_(row.inserted);
     } else {
       rest = points;
     }
@@ -163,8 +181,13 @@ public:
     const auto t0 = std::chrono::steady_clock::now();
     Partition_round row;
     row.points = row.inserted = rest.size();
-    insert_in_order(m_, rest, first_new, duplicate_of, hint, filter_, sub_filter_, timed_, stats);
+    row.mesh_vertices = vertices_in_mesh_;
+    const std::size_t before = points.size() - rest.size();
+    const std::size_t step = progress_ ? Partitioned_insertion::progress_step : 0;
+    insert_in_order(m_, rest, first_new, duplicate_of, hint, filter_, sub_filter_, timed_, stats, step,
+                    [&](std::size_t done) { progress_(before + done); });
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    vertices_in_mesh_ += row.inserted;
     rounds.push_back(row);
   }
 
@@ -211,21 +234,28 @@ private:
     claims_.assign(fresh_begin[runs], 0);
     first_fresh_ = fresh_begin[0];
 
-    // Participant slot k runs the k-th share of the runs on one thread, so a
+    // Participant k runs the k-th share of the runs on one thread, so a
     // run's cavity is searched and filled in the same cache.  Steps alternate
     // CAVITIES (even) and BALLS (odd); after each, every slot publishes the
-    // steps it has finished and waits for the others.  A slot that no thread
-    // has taken while the first barrier waits for it (its TBB thread busy
-    // elsewhere) is taken by the waiting thread: only the first barrier can
-    // wait for a slot that has not started.
-    std::vector<Barrier_participant> slot(static_cast<std::size_t>(threads));
+    // steps it has finished and waits for the others.  A share that no
+    // thread has taken while the first barrier waits for it (its TBB thread
+    // busy elsewhere) is taken by the waiting thread: only the first barrier
+    // can wait for a share that has not started.
+    std::vector<Barrier_participant> participants(static_cast<std::size_t>(threads));
+    std::atomic<bool> failed{false};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    const std::size_t run0_points = static_cast<std::size_t>(run[0].end - run[0].next);
+    const std::uint64_t report_every =
+        2 * std::max<std::uint64_t>(1, Partitioned_insertion::progress_step / std::uint64_t(runs));
     auto runs_of = [&](int k) {
       return std::make_pair(chunk_begin(runs, threads, k), chunk_begin(runs, threads, k + 1));
     };
     auto participant = [&](int c) {
-      int free_slot = 0;
-      if(!slot[c].taken.compare_exchange_strong(free_slot, 1)) return;
+      int untaken = 0;
+      if(!participants[c].taken.compare_exchange_strong(untaken, 1)) return;
       std::vector<int> mine(1, c);
+      try {
       with_vector_paths([&](auto paths) {
         typedef Delaunay_kernel<Sequential_ownership, Mesh_slots, Walk_to_the_end, decltype(paths)> Kernel;
         auto run_step = [&](int k, std::uint64_t step) {
@@ -248,19 +278,24 @@ private:
           }
           // Read by the others after this step's barrier, rewritten only two
           // steps later, past the next barrier, which they must cross first.
-          if(step % 2 == 1) slot[k].active_runs = active_runs;
-          slot[k].steps_done.store(step + 1, std::memory_order_release);
+          if(step % 2 == 1) participants[k].active_runs = active_runs;
+          if(k == 0 && step % report_every == report_every - 1 && progress_)
+            progress_(static_cast<std::size_t>(run[0].end - run[0].next) >= run0_points
+                          ? 0
+                          : (run0_points - static_cast<std::size_t>(run[0].end - run[0].next)) * std::size_t(runs));
+          participants[k].steps_done.store(step + 1, std::memory_order_release);
         };
         for(std::uint64_t step = 0;; ++step) {
           for(std::size_t j = 0; j < mine.size(); ++j) run_step(mine[j], step);
           const auto waiting_since = std::chrono::steady_clock::now();
           for(int k = 0; k < threads; ++k) {
             unsigned spins = 0;
-            while(slot[k].steps_done.load(std::memory_order_acquire) <= step) {
+            while(participants[k].steps_done.load(std::memory_order_acquire) <= step) {
+              if(failed.load(std::memory_order_relaxed)) return;
               if(step == 0 && spins % 1024 == 1023 &&
                  std::chrono::steady_clock::now() - waiting_since > std::chrono::milliseconds(2)) {
-                int untaken = 0;
-                if(slot[k].taken.compare_exchange_strong(untaken, 1)) {
+                int never_started = 0;
+                if(participants[k].taken.compare_exchange_strong(never_started, 1)) {
                   mine.push_back(k);
                   run_step(k, step);
                 }
@@ -270,13 +305,19 @@ private:
           }
           if(step % 2 == 1) {
             int active_runs = 0;
-            for(int k = 0; k < threads; ++k) active_runs += slot[k].active_runs;
+            for(int k = 0; k < threads; ++k) active_runs += participants[k].active_runs;
             if(active_runs == 0 || step / 2 + 2 >= max_iterations) return;
           }
         }
       });
+      } catch(...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if(!failure) failure = std::current_exception();
+        failed.store(true, std::memory_order_relaxed);
+      }
     };
     for_each_chunk(threads, participant);
+    if(failure) std::rethrow_exception(failure);
 
     // Unused fresh slots and the runs' free lists go back to the mesh; the
     // points of stalled runs are left for the sequential finish.
@@ -360,7 +401,14 @@ private:
     const Vertex_id v = *me.next;
     const double* p = m_.point(v);
     if(!m_.is_live(me.hint)) me.hint = some_live_tet(run);
+    typedef std::chrono::steady_clock Clock;
+    Clock::time_point t0, t1;
+    if(me.scratch.timed) t0 = Clock::now();
     const Tet_id start = kernel.walk(me.hint, p);
+    if(me.scratch.timed) {
+      t1 = Clock::now();
+      me.scratch.stats.walk_seconds += std::chrono::duration<double>(t1 - t0).count();
+    }
     me.hint = start;
     if(!m_.is_ghost(start)) {
       for(int i = 0; i < 4; ++i) {
@@ -428,6 +476,7 @@ private:
     facets.resize(found);
     record_boundary(me);
     me.has_cavity = true;
+    if(me.scratch.timed) me.scratch.stats.cavity_seconds += std::chrono::duration<double>(Clock::now() - t1).count();
   }
 
   // The boundary facets as new tetrahedra (p, a, b, c), with the ghost last,
@@ -524,6 +573,14 @@ private:
   // stops: its points go to the sequential finish.
   void fill_ball(Barrier_run& me)
   {
+    if(!me.scratch.timed) return fill_ball_untimed(me);
+    const auto t0 = std::chrono::steady_clock::now();
+    fill_ball_untimed(me);
+    me.scratch.stats.ball_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  void fill_ball_untimed(Barrier_run& me)
+  {
     const Vertex_id v = *me.next;
     const std::size_t facets = me.facets.size(), cells = me.cavity.size();
     if(facets > cells && !me.slots.reserve(facets - cells)) {
@@ -550,15 +607,22 @@ private:
       new_ghosts += b.v[2] == ghost_vertex ? 1 : 0;
       if(m_.with_sub_determinants) update_sub_determinants(m_, t);
     }
-    if(me.large) glue_with_edge_hash(me);
-    else glue_with_table(me);
+    if(me.large) {
+      glue_with_edge_hash(me);
+      ++me.scratch.stats.large_cavities;
+    } else {
+      glue_with_table(me);
+      ++me.scratch.stats.small_cavities;
+    }
     me.scratch.live_delta += static_cast<std::ptrdiff_t>(facets) - static_cast<std::ptrdiff_t>(cells);
     me.scratch.ghost_delta += static_cast<std::ptrdiff_t>(new_ghosts) - static_cast<std::ptrdiff_t>(me.cavity_ghosts);
     ++me.scratch.stats.inserted;
     me.scratch.stats.cavity_tets += cells;
     me.scratch.stats.ball_tets += facets;
     ++me.next;
-    me.hint = me.next != me.end ? nearest_ball_tet(me, m_.point(*me.next)) : me.ball.front();
+    me.hint = me.ball[me.next == me.end ? 0
+                                        : nearest_boundary_facet(m_, me.boundary.data(), me.boundary.size(),
+                                                                 m_.point(*me.next))];
   }
 
   // Facet i of a new tetrahedron holds the point and the boundary edge
@@ -623,32 +687,13 @@ private:
     }
   }
 
-  // The new tetrahedron whose boundary facet has its centroid nearest to q
-  // (the run's next point), where the next walk starts.
-  Tet_id nearest_ball_tet(const Barrier_run& me, const double* q) const
-  {
-    Tet_id best = me.ball.front();
-    double best_distance = std::numeric_limits<double>::infinity();
-    for(std::size_t k = 0; k < me.boundary.size(); ++k) {
-      const Boundary_facet& b = me.boundary[k];
-      if(b.v[2] == ghost_vertex) continue;
-      const double *a = m_.point(b.v[0]), *c = m_.point(b.v[1]), *d = m_.point(b.v[2]);
-      const double x = a[0] + c[0] + d[0] - 3 * q[0], y = a[1] + c[1] + d[1] - 3 * q[1],
-                   z = a[2] + c[2] + d[2] - 3 * q[2];
-      const double distance = x * x + y * y + z * z;
-      if(distance < best_distance) {
-        best_distance = distance;
-        best = me.ball[k];
-      }
-    }
-    return best;
-  }
-
   Flat_storage& m_;
   Static_filter filter_;
   Sub_determinant_filter sub_filter_;
   bool timed_;
   int runs_per_thread_ = default_runs_per_thread;
+  std::size_t vertices_in_mesh_ = 0;
+  std::function<void(std::size_t)> progress_;
   std::vector<std::uint32_t> claims_; // per slot, during insert_with_barriers
   Tet_id first_fresh_ = 0;
 };

@@ -51,6 +51,33 @@ struct Boundary_facet
 };
 static_assert(sizeof(Boundary_facet) <= 24, "boundary facet record");
 
+// The next walk's start: of the new tetrahedra (one per boundary facet, in
+// the same order), the one whose boundary facet has its centroid nearest to
+// q; 0 if all facets are on the hull.  Every new tetrahedron has the
+// inserted point as a vertex, so a walk from an arbitrary one first turns
+// around that point (5.1 steps per point on uniform input); from this one,
+// 2.1.  The facets' vertices were just read to build the ball, so the scan
+// runs in cache.
+inline std::size_t nearest_boundary_facet(const Flat_storage& m, const Boundary_facet* facets, std::size_t n,
+                                          const double* q)
+{
+  std::size_t best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for(std::size_t k = 0; k < n; ++k) {
+    const Boundary_facet& b = facets[k];
+    if(b.v[2] == ghost_vertex) continue;
+    const double *a = m.point(b.v[0]), *c = m.point(b.v[1]), *d = m.point(b.v[2]);
+    const double x = a[0] + c[0] + d[0] - 3 * q[0], y = a[1] + c[1] + d[1] - 3 * q[1],
+                 z = a[2] + c[2] + d[2] - 3 * q[2];
+    const double distance = x * x + y * y + z * z;
+    if(distance < best_distance) {
+      best_distance = distance;
+      best = k;
+    }
+  }
+  return best;
+}
+
 // Counters and optional per-phase times (paper Table 1).
 struct Kernel_statistics
 {
@@ -354,7 +381,7 @@ public:
       s_.stats.cavity_seconds += seconds(t1, t2);
       s_.stats.ball_seconds += seconds(t2, t3);
     }
-    hint = next == nullptr ? s_.ball.front() : ball_tet_nearest(next);
+    hint = s_.ball[next == nullptr ? 0 : nearest_boundary_facet(m_, s_.boundary.data(), s_.boundary.size(), next)];
     ++s_.stats.inserted;
     return Insertion_result::inserted;
   }
@@ -509,31 +536,6 @@ private:
     for(Tet_id t = 0; t < m_.number_of_slots(); ++t)
       if(m_.is_live(t) && in_conflict(t, p)) return t;
     return 0;
-  }
-
-  // The next walk's start: the new tetrahedron whose boundary facet has its
-  // centroid nearest to q.  Every new tetrahedron has the inserted point as a
-  // vertex, so a walk from an arbitrary one first turns around that point
-  // (5.1 steps per point on uniform input); from this one, 2.1.  The facet's
-  // vertices were just read to build the ball, so the scan runs in cache.
-  Tet_id ball_tet_nearest(const double* q) const
-  {
-    Tet_id best = s_.ball.front();
-    double best_distance = std::numeric_limits<double>::infinity();
-    const std::size_t facets = s_.boundary.size();
-    for(std::size_t k = 0; k < facets; ++k) {
-      const Boundary_facet& b = s_.boundary[k];
-      if(b.v[2] == ghost_vertex) continue;
-      const double *a = m_.point(b.v[0]), *c = m_.point(b.v[1]), *d = m_.point(b.v[2]);
-      const double x = a[0] + c[0] + d[0] - 3 * q[0], y = a[1] + c[1] + d[1] - 3 * q[1],
-                   z = a[2] + c[2] + d[2] - 3 * q[2];
-      const double distance = x * x + y * y + z * z;
-      if(distance < best_distance) {
-        best_distance = distance;
-        best = s_.ball[k];
-      }
-    }
-    return best;
   }
 
   // CAVITY: marks every tetrahedron in conflict with p as deleted and lists

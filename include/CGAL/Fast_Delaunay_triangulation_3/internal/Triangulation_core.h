@@ -712,7 +712,9 @@ private:
     if(parallel_engine == Parallel_engine::barrier) {
       Barrier_insertion barrier(mesh, Static_filter::for_box(box_lo_, box_hi_),
                                 Sub_determinant_filter::for_box(box_lo_, box_hi_), timed);
+      barrier.set_vertices_in_mesh(first_new);
       std::size_t begin = 0;
+      if(progress) barrier.set_progress([&](std::size_t settled) { report_progress(begin + settled); });
       for(std::size_t r = 0; r < round_end.size(); ++r) {
         barrier.insert(vertex_list(first_new + begin, first_new + round_end[r], skip), r == 0 ? 1 : partitions,
                        first_new, duplicate_of, hint_, last_report.rounds, last_report.kernel);
