@@ -73,13 +73,6 @@
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 
-// A directed edge of a cavity boundary and the new tetrahedron facet on it.
-struct Scratch_edge
-{
-  std::uint64_t key;
-  Facet_code facet;
-};
-
 // One run of points of the barrier engine and what its current point needs.
 struct Barrier_run
 {
@@ -96,7 +89,6 @@ struct Barrier_run
   std::size_t cavity_ghosts = 0;
   bool large = false;              // more than 31 boundary vertices: glued by the edge hash
   std::vector<Tet_id> ball;
-  std::vector<Scratch_edge> edges;
   // Local numbers 1..31 of the boundary vertices, for the adjacency table,
   // in an open-addressing table of the run's own (the vertex records'
   // scratch words are shared with other runs' cavities); empty keys are the
@@ -131,8 +123,10 @@ class Barrier_insertion
 {
 public:
   // Runs per thread (the paper's M2): more runs make the barriers rarer and
-  // the iterations' work more even, and cost memory for each run's lists.
-  static constexpr int default_runs_per_thread = 8;
+  // the iterations' work more even, and cost memory for each run's lists
+  // (shell, 1e6 points, 2 threads: 1, 2, 4, 8, 16 runs took 1.94, 1.87,
+  // 1.83, 1.78, 1.77 s).
+  static constexpr int runs_per_thread = 8;
   // Below this many points per run a round is inserted sequentially.
   static constexpr std::size_t min_points_per_run = 256;
 
@@ -141,7 +135,6 @@ public:
       : m_(mesh), filter_(filter), sub_filter_(sub_filter), timed_(timed)
   {}
 
-  void set_runs_per_thread(int n) { runs_per_thread_ = std::max(1, std::min(n, 255)); }
   void set_vertices_in_mesh(std::size_t n) { vertices_in_mesh_ = n; }
   // Called with the points of insert()'s call settled so far: every
   // Partitioned_insertion::progress_step points of the sequential parts, and
@@ -160,7 +153,7 @@ public:
               Kernel_statistics& stats)
   {
     if(!m_.is_live(hint)) hint = m_.first_live_tet();
-    const int runs = std::min<int>(threads * runs_per_thread_, 255);
+    const int runs = std::min<int>(threads * runs_per_thread, 255);
     std::vector<Vertex_id> rest;
     if(threads > 1 && points.size() >= min_points_per_run * std::size_t(runs)) {
       const auto t0 = std::chrono::steady_clock::now();
@@ -232,7 +225,6 @@ private:
       run[r].first_fresh_slot = fresh_begin[r];
     }
     claims_.assign(fresh_begin[runs], 0);
-    first_fresh_ = fresh_begin[0];
 
     // Participant k runs the k-th share of the runs on one thread, so a
     // run's cavity is searched and filled in the same cache.  Steps alternate
@@ -558,7 +550,7 @@ private:
   // run has written yet hold garbage and are skipped.
   Tet_id some_live_tet(const std::vector<Barrier_run>& run) const
   {
-    for(Tet_id t = 0; t < first_fresh_; ++t)
+    for(Tet_id t = 0; t < run.front().first_fresh_slot; ++t)
       if(m_.is_live(t)) return t;
     for(const Barrier_run& r : run)
       for(Tet_id t = r.first_fresh_slot; t < r.slots.next_fresh; ++t)
@@ -608,7 +600,7 @@ private:
       if(m_.with_sub_determinants) update_sub_determinants(m_, t);
     }
     if(me.large) {
-      glue_with_edge_hash(me);
+      glue_ball_by_edge_hash(m_, me.boundary.data(), me.ball.data(), me.boundary.size(), me.scratch.large_edges);
       ++me.scratch.stats.large_cavities;
     } else {
       glue_with_table(me);
@@ -627,7 +619,8 @@ private:
 
   // Facet i of a new tetrahedron holds the point and the boundary edge
   // opposite b.v[i - 1]; across it lies the new tetrahedron with the same
-  // edge reversed: directed edges in an open-addressing table.
+  // edge reversed, found through the adjacency table indexed by the edge's
+  // local vertex numbers, as in the kernel.
   void glue_with_table(Barrier_run& me) const
   {
     constexpr unsigned n = Insertion_scratch::table_size;
@@ -651,51 +644,13 @@ private:
     }
   }
 
-  // The same for a cavity with more than 31 boundary vertices.
-  void glue_with_edge_hash(Barrier_run& me) const
-  {
-    const std::size_t facets = me.boundary.size();
-    std::size_t capacity = 64;
-    while(capacity < 6 * facets) capacity *= 2;
-    const int shift = 64 - __builtin_ctzll(capacity);
-    constexpr std::uint64_t empty = ~std::uint64_t(0);
-    me.edges.assign(capacity, Scratch_edge{empty, 0});
-    auto key = [](Vertex_id from, Vertex_id to) { return (std::uint64_t(from) << 32) | to; };
-    auto slot_of = [&](std::uint64_t k) { return std::size_t((k * 0x9e3779b97f4a7c15ull) >> shift); };
-    for(std::size_t k = 0; k < facets; ++k) {
-      const Boundary_facet& b = me.boundary[k];
-      const Tet_id t = me.ball[k];
-      const std::uint64_t keys[3] = {key(b.v[1], b.v[2]), key(b.v[2], b.v[0]), key(b.v[0], b.v[1])};
-      for(int i = 0; i < 3; ++i) {
-        std::size_t s = slot_of(keys[i]);
-        while(me.edges[s].key != empty) s = (s + 1) & (capacity - 1);
-        me.edges[s] = Scratch_edge{keys[i], facet_code(t, i + 1)};
-      }
-    }
-    for(std::size_t k = 0; k < facets; ++k) {
-      const Boundary_facet& b = me.boundary[k];
-      Facet_code* n = m_.tets[me.ball[k]].n;
-      const std::uint64_t keys[3] = {key(b.v[2], b.v[1]), key(b.v[0], b.v[2]), key(b.v[1], b.v[0])};
-      for(int i = 0; i < 3; ++i) {
-        std::size_t s = slot_of(keys[i]);
-        while(me.edges[s].key != keys[i]) {
-          CGAL_assertion(me.edges[s].key != empty);
-          s = (s + 1) & (capacity - 1);
-        }
-        n[i + 1] = me.edges[s].facet;
-      }
-    }
-  }
-
   Flat_storage& m_;
   Static_filter filter_;
   Sub_determinant_filter sub_filter_;
   bool timed_;
-  int runs_per_thread_ = default_runs_per_thread;
   std::size_t vertices_in_mesh_ = 0;
   std::function<void(std::size_t)> progress_;
   std::vector<std::uint32_t> claims_; // per slot, during insert_with_barriers
-  Tet_id first_fresh_ = 0;
 };
 
 } // namespace Fast_Delaunay_triangulation_3_internal

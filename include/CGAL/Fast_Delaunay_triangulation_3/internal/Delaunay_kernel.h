@@ -137,6 +137,54 @@ struct Insertion_scratch
   }
 };
 
+// Glues facets 1, 2, 3 of the new tetrahedra ball[k] = (p, boundary[k].v),
+// already written, to one another; for cavities with more than 31 boundary
+// vertices, whose vertices have no small numbers for the adjacency table.
+// Large cavities (the mesher's first refinement passes make cavities of
+// hundreds of tetrahedra): the directed boundary edges in an open-addressing
+// hash table twice their number, then each edge finds its reverse there.
+// Linear in the cavity; the sort and binary searches it replaces were most
+// of the mesher's ball time.
+inline void glue_ball_by_edge_hash(Flat_storage& m, const Boundary_facet* boundary, const Tet_id* ball,
+                                   std::size_t facets, std::vector<Insertion_scratch::Half_edge>& table)
+{
+  auto key = [](Vertex_id from, Vertex_id to) { return (static_cast<std::uint64_t>(from) << 32) | to; };
+  // Vertex ids are below 2^31: no edge has this key.
+  constexpr std::uint64_t empty = ~std::uint64_t(0);
+  std::size_t capacity = 64;
+  while(capacity < 6 * facets) capacity *= 2;
+  const int shift = 64 - __builtin_ctzll(capacity);
+  table.assign(capacity, {empty, 0});
+  auto slot_of = [&](std::uint64_t k) { return static_cast<std::size_t>((k * 0x9e3779b97f4a7c15ull) >> shift); };
+  auto put = [&](std::uint64_t k, Facet_code facet) {
+    std::size_t i = slot_of(k);
+    while(table[i].key != empty) i = (i + 1) & (capacity - 1);
+    table[i] = {k, facet};
+  };
+  auto find = [&](std::uint64_t k) -> Facet_code {
+    std::size_t i = slot_of(k);
+    while(table[i].key != k) {
+      CGAL_assertion(table[i].key != empty);
+      i = (i + 1) & (capacity - 1);
+    }
+    return table[i].facet;
+  };
+  for(std::size_t k = 0; k < facets; ++k) {
+    const Boundary_facet& b = boundary[k];
+    put(key(b.v[1], b.v[2]), facet_code(ball[k], 1));
+    put(key(b.v[2], b.v[0]), facet_code(ball[k], 2));
+    put(key(b.v[0], b.v[1]), facet_code(ball[k], 3));
+  }
+  // Facet i of a new tetrahedron holds p and the edge opposite b.v[i - 1];
+  // across it lies the tetrahedron that has the same edge reversed.
+  for(std::size_t k = 0; k < facets; ++k) {
+    const Boundary_facet& b = boundary[k];
+    m.neighbor_code(facet_code(ball[k], 1)) = find(key(b.v[2], b.v[1]));
+    m.neighbor_code(facet_code(ball[k], 2)) = find(key(b.v[0], b.v[2]));
+    m.neighbor_code(facet_code(ball[k], 3)) = find(key(b.v[1], b.v[0]));
+  }
+}
+
 // Recomputes the cached sub-determinants of tetrahedron t from its vertices.
 inline void update_sub_determinants(Flat_storage& m, Tet_id t)
 {
@@ -864,57 +912,12 @@ private:
     }
   }
 
-  // Fallback for cavities with more than 31 boundary vertices: half-edges
-  // sorted by directed edge, each matched with its reverse.
-  // Large cavities (the mesher's first refinement passes make cavities of
-  // hundreds of tetrahedra): the directed boundary edges in an open-addressing
-  // hash table twice their number, then each edge finds its reverse there.
-  // Linear in the cavity; the sort and binary searches it replaces were
-  // most of the mesher's ball time.
+  // Fallback for cavities with more than 31 boundary vertices.
   __attribute__((noinline)) void glue_with_edge_hash(Vertex_id p)
   {
-    auto key = [](Vertex_id from, Vertex_id to) { return (static_cast<std::uint64_t>(from) << 32) | to; };
-    // Vertex ids are below 2^31: no edge has this key.
-    constexpr std::uint64_t empty = ~std::uint64_t(0);
     const std::size_t facets = s_.boundary.size();
-    std::size_t capacity = 64;
-    while(capacity < 6 * facets) capacity *= 2;
-    const int shift = 64 - __builtin_ctzll(capacity);
-    auto& table = s_.large_edges;
-    table.assign(capacity, {empty, 0});
-    auto slot_of = [&](std::uint64_t k) {
-      return static_cast<std::size_t>((k * 0x9e3779b97f4a7c15ull) >> shift);
-    };
-    auto put = [&](std::uint64_t k, Facet_code facet) {
-      std::size_t i = slot_of(k);
-      while(table[i].key != empty) i = (i + 1) & (capacity - 1);
-      table[i] = {k, facet};
-    };
-    auto find = [&](std::uint64_t k) -> Facet_code {
-      std::size_t i = slot_of(k);
-      while(table[i].key != k) {
-        CGAL_assertion(table[i].key != empty);
-        i = (i + 1) & (capacity - 1);
-      }
-      return table[i].facet;
-    };
-    for(std::size_t k = 0; k < facets; ++k) {
-      const Boundary_facet& b = s_.boundary[k];
-      const Tet_id t = s_.ball[k];
-      write_ball_tet(t, p, b);
-      put(key(b.v[1], b.v[2]), facet_code(t, 1));
-      put(key(b.v[2], b.v[0]), facet_code(t, 2));
-      put(key(b.v[0], b.v[1]), facet_code(t, 3));
-    }
-    // Facet i of a new tetrahedron holds p and the edge opposite b.v[i - 1];
-    // across it lies the tetrahedron that has the same edge reversed.
-    for(std::size_t k = 0; k < facets; ++k) {
-      const Boundary_facet& b = s_.boundary[k];
-      const Tet_id t = s_.ball[k];
-      m_.neighbor_code(facet_code(t, 1)) = find(key(b.v[2], b.v[1]));
-      m_.neighbor_code(facet_code(t, 2)) = find(key(b.v[0], b.v[2]));
-      m_.neighbor_code(facet_code(t, 3)) = find(key(b.v[1], b.v[0]));
-    }
+    for(std::size_t k = 0; k < facets; ++k) write_ball_tet(s_.ball[k], p, s_.boundary[k]);
+    glue_ball_by_edge_hash(m_, s_.boundary.data(), s_.ball.data(), facets, s_.large_edges);
   }
 
   Flat_storage& m_;
