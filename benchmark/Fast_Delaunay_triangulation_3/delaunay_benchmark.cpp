@@ -12,12 +12,15 @@
 // fast-par-remove / cgal-par-remove the removal of the same 10% as one range, remove(first, last), on --threads;
 // rows fast-epec / cgal-epec (not run by default) time the insertion of the same points as points of CGAL's exact
 // constructions kernel; rows fast-loop / cgal-loop and fast-hint / cgal-hint (not run by default) time insert(p)
-// called once per point, without and with the previous vertex as hint; each is compared with its CGAL counterpart.
+// called once per point, without and with the previous vertex as hint; rows fast-apex / cgal-apex time insert(p) of
+// one point above the bounding box after an untimed insertion of the points (with --dist plane, points in the plane
+// z = x: the lift from dimension 2 to 3); each is compared with its CGAL counterpart.
 //
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,shell,torus,surface...]|all] [--surface FILE]
 //                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-par-remove,
 //                                      cgal-par-remove,fast-move,cgal-move,
-//                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint]
+//                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint,
+//                                      fast-apex,cgal-apex]
 //                           [--rounds 3] [--threads 1,2] [--phases] [--verbose] [--scalar-paths] [--csv FILE|-]
 //
 // Besides the volume distributions of the tests, shell, torus and surface are what scans give: points near a closed
@@ -248,6 +251,21 @@ Engine_result run_cgal_loop(const Points& points, int /*threads*/) { return inse
 Engine_result run_fast_hint(const Points& points, int /*threads*/) { return insert_one_by_one<Fast_dt>(points, true); }
 Engine_result run_cgal_hint(const Points& points, int /*threads*/) { return insert_one_by_one<Cgal_dt>(points, true); }
 
+// Times insert(p) of one point above the points' bounding box, after an untimed insertion of the points: on
+// --dist plane the point off the plane that lifts the triangulation from dimension 2 to 3.
+template <class Triangulation>
+Engine_result insert_apex(const Points& points)
+{
+  Triangulation triangulation(points.begin(), points.end());
+  const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
+  const Point apex(0.5 * (box.xmin() + box.xmax()), 0.5 * (box.ymin() + box.ymax()),
+                   box.zmax() + (box.zmax() - box.zmin()) + 1);
+  return time_and_count(triangulation, [&] { triangulation.insert(apex); });
+}
+
+Engine_result run_fast_apex(const Points& points, int /*threads*/) { return insert_apex<Fast_dt>(points); }
+Engine_result run_cgal_apex(const Points& points, int /*threads*/) { return insert_apex<Cgal_dt>(points); }
+
 Engine_result run_fast_remove(const Points& points, int /*threads*/) { return remove_tenth<Fast_dt>(points); }
 Engine_result run_cgal_remove(const Points& points, int /*threads*/) { return remove_tenth<Cgal_dt>(points); }
 Engine_result run_fast_move(const Points& points, int /*threads*/) { return move_tenth<Fast_dt>(points); }
@@ -395,6 +413,8 @@ const std::vector<Engine>& engine_table()
       {"cgal-loop", false, false, run_cgal_loop, "cgal-loop"},
       {"fast-hint", false, false, run_fast_hint, "cgal-hint"},
       {"cgal-hint", false, false, run_cgal_hint, "cgal-hint"},
+      {"fast-apex", false, false, run_fast_apex, "cgal-apex"},
+      {"cgal-apex", false, false, run_cgal_apex, "cgal-apex"},
       {"fast-remove", false, false, run_fast_remove, "cgal-remove"},
       {"cgal-remove", false, false, run_cgal_remove, "cgal-remove"},
 #ifdef CGAL_LINKED_WITH_TBB
@@ -621,9 +641,10 @@ void print_usage(std::FILE* to)
                "usage: delaunay_benchmark [options]\n"
                "  --n LIST        numbers of points, e.g. 1e5,1e6 (default 1e6)\n"
                "  --dist LIST     uniform, gauss, clusters, sphere, grid, shell, torus, surface, duplicates,\n"
-               "                  offset, tiny, or all (all = the first eight; default uniform); shell: near the\n"
+               "                  offset, tiny, plane, or all (all = the first eight; default uniform); shell: near the\n"
                "                  unit sphere, torus: near the torus R = 1, r = 0.3 (noise 1e-3 along the normal);\n"
-               "                  surface: sampled by area on --surface, noise 1e-3 of its bounding box diagonal\n"
+               "                  surface: sampled by area on --surface, noise 1e-3 of its bounding box diagonal;\n"
+               "                  plane: uniform in the plane z = x (dimension 2)\n"
                "  --surface FILE  the OFF surface of --dist surface (default %s;\n"
                "                  missing: that distribution is skipped)\n"
                "  --engines LIST  among %s (default %s)\n"

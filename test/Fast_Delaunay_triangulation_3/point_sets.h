@@ -1,7 +1,7 @@
 // Point distributions shared by the tests and the benchmarks: uniform,
 // Gaussian, clustered, on a sphere, shuffled integer grid, near a sphere or
 // a torus (noisy scans of closed surfaces), with duplicates, far from the
-// origin, tiny.  Deterministic for a given seed.
+// origin, tiny, in a plane.  Deterministic for a given seed.
 #ifndef CGAL_FDT3_TEST_POINT_SETS_H
 #define CGAL_FDT3_TEST_POINT_SETS_H
 
@@ -139,6 +139,15 @@ inline std::vector<Xyz> offset_points(std::size_t n, double offset = 1e9, std::u
   return p;
 }
 
+// Uniform in the unit square of the plane z = x (exactly coplanar: z is a
+// copy of x), the triangulation of dimension 2.
+inline std::vector<Xyz> plane_points(std::size_t n, std::uint64_t seed = 10)
+{
+  std::vector<Xyz> p = uniform_points(n, seed);
+  for(Xyz& q : p) q.z = q.x;
+  return p;
+}
+
 inline std::vector<Xyz> scaled_points(std::size_t n, double scale = 1e-9, std::uint64_t seed = 8)
 {
   std::vector<Xyz> p = uniform_points(n, seed);
@@ -191,6 +200,7 @@ inline std::vector<Xyz> make_points(const std::string& name, std::size_t n, std:
   if(name == "duplicates") return duplicated_points(n, seed + 5);
   if(name == "offset") return offset_points(n, 1e9, seed + 6);
   if(name == "tiny") return scaled_points(n, 1e-9, seed + 7);
+  if(name == "plane") return plane_points(n, seed + 10);
   throw std::invalid_argument("unknown distribution '" + name + "'");
 }
 

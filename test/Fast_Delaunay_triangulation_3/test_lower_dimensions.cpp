@@ -293,6 +293,43 @@ TEST(Incremental, BatchesThatStayPlanarThenLift)
   expect_same(fast, cgal);
 }
 
+// The lift joins the apex to the triangles in their slots and puts the
+// ghosts below in free slots: after removals in dimension 2 (free slots
+// among the triangles), from either side of the plane, from a grid (ties),
+// by insert(p) and by a range with more points in the plane and off it.
+TEST(Incremental, LiftAfterRemovalsFromEitherSide)
+{
+  // Squares of side 3 in the plane 2x - 2y + z = 0 (cocircular ties).
+  std::vector<Point> grid;
+  for(int u = 0; u < 9; ++u)
+    for(int v = 0; v < 7; ++v) grid.emplace_back(u + 2 * v, 2 * u + v, 2 * u - 2 * v);
+  const std::vector<Point> points = shuffled(grid, 31);
+  for(const Point& apex : {Point(2, 1, 9), Point(2, 1, -9), Point(40, -3, 0)}) {
+    SCOPED_TRACE("apex " + std::to_string(apex.x()) + " " + std::to_string(apex.z()));
+    Fast_dt fast(points.begin(), points.end());
+    Cgal_dt cgal(points.begin(), points.end());
+    ASSERT_EQ(fast.dimension(), 2);
+    for(std::size_t k = 0; k < points.size(); k += 5) {
+      fast.remove(fast.nearest_vertex(points[k]));
+      cgal.remove(cgal.nearest_vertex(points[k]));
+    }
+    expect_same(fast, cgal);
+    Fast_dt by_range = fast;
+    fast.insert(apex);
+    cgal.insert(apex);
+    EXPECT_TRUE(fast.is_valid(true));
+    expect_same(fast, cgal);
+    // The apex and, in the same range, removed grid points and two more apexes.
+    std::vector<Point> more = {apex, Point(apex.x() + 1, apex.y(), 2 * apex.z()), Point(1, 0, -apex.z())};
+    for(std::size_t k = 0; k < points.size(); k += 5) more.push_back(points[k]);
+    by_range.insert(more.begin(), more.end());
+    std::vector<Point> all = points;
+    all.insert(all.end(), more.begin(), more.end());
+    EXPECT_TRUE(by_range.is_valid(true));
+    expect_same(by_range, Cgal_dt(all.begin(), all.end()));
+  }
+}
+
 // ---------------------------------------------------------------- queries
 
 TEST(Queries, IsEdgeAndIsFacetBelowDimensionThree)

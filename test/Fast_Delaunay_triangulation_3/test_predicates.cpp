@@ -599,6 +599,46 @@ TEST(Helpers, LexicographicOrderAndCollinearityAsCgal)
   }
 }
 
+// The filtered coplanar orientation (the walk of dimension 2) answers CGAL's
+// exact coplanar_orientation: random triples, nearly collinear ones, and
+// triples in a vertical plane, whose xy projection is a line (the answer
+// then comes from another projection), at every frame's magnitude.
+TEST(Coplanar_orientation, SignOfCgalsExactPredicate)
+{
+  Generator g(11);
+  std::size_t collinear_in_xy = 0, near_collinear = 0;
+  for(const Frame& f : frames()) {
+    SCOPED_TRACE(describe(f));
+    for(int i = 0; i < 1500; ++i) {
+      const Coordinates a = g.point(f.scale, f.offset), b = g.point(f.scale, f.offset);
+      Coordinates c = g.point(f.scale, f.offset);
+      if(i % 3 == 1) {
+        // Nearly on the line ab.
+        const double u = g.uniform(-1, 2);
+        for(int k = 0; k < 3; ++k) c[k] = a[k] + u * (b[k] - a[k]);
+        c = g.nudged(c);
+        ++near_collinear;
+      } else if(i % 3 == 2) {
+        // In the plane x = a.x, so all three project onto one line in xy.
+        c[0] = a[0];
+        Coordinates d = b;
+        d[0] = a[0];
+        const int expected = static_cast<int>(
+            K().coplanar_orientation_3_object()(to_point(a), to_point(d), to_point(c)));
+        ASSERT_EQ(P::coplanar_orientation(a.data(), d.data(), c.data()), expected) << "case " << i;
+        ++collinear_in_xy;
+        continue;
+      }
+      const int expected =
+          static_cast<int>(K().coplanar_orientation_3_object()(to_point(a), to_point(b), to_point(c)));
+      ASSERT_EQ(P::coplanar_orientation(a.data(), b.data(), c.data()), expected) << "case " << i;
+      ASSERT_EQ(P::coplanar_orientation(b.data(), a.data(), c.data()), -expected) << "case " << i;
+    }
+  }
+  EXPECT_GT(collinear_in_xy, 1000u);
+  EXPECT_GT(near_collinear, 1000u);
+}
+
 // ---------------------------------------------------------------- filter constants
 
 TEST(Filter_bounds, ConstantsCoverTheirDerivation)

@@ -235,6 +235,132 @@ inline void make_initial_tetrahedron(Flat_storage& mesh, Vertex_id simplex[4])
   mesh.ghost_tets = 4;
 }
 
+// The first point off the plane of a triangulation of dimension 2: `mesh`
+// holds the triangles of CGAL's dimension 2 (Lower_dimensions.h: consistently
+// oriented, the infinite vertex in any slot, one infinite triangle per hull
+// edge) and `apex` is a vertex not in their plane.  Each triangle becomes in
+// its slot the tetrahedron of it and the apex, an infinite triangle (hull
+// edge ab) the ghost on the hull facet (a, b, apex), and each finite
+// triangle gets a ghost under it in a new slot.  This is what CGAL's
+// insertion outside the affine hull does: every circumscribed sphere of a
+// cone cuts the plane in the empty circumcircle of its triangle, so the
+// tetrahedra are Delaunay; for a point of the plane on such a sphere, the
+// apex's term in the perturbed in-sphere test is the orientation of four
+// coplanar points, zero, and the other terms decide as the perturbed
+// in-circle test did, so they are the tetrahedra of the symbolic
+// perturbation too (tested against CGAL on cocircular grids and circles).
+// Linear in the triangles, against a fresh 3D insertion of all the points,
+// whose coplanar ones are all degenerate for the 3D predicates.
+inline void cone_over_triangles(Flat_storage& mesh, Vertex_id apex)
+{
+  const Tet_id slots = mesh.number_of_slots();
+  // The triangles as they were: their neighbour codes are read while the
+  // slots are rewritten.
+  std::vector<Tet_record> flat(mesh.tets.begin(), mesh.tets.end());
+  // Triangle slots (the ghosts below take free slots, which are not).
+  auto triangle = [&](Tet_id t) { return t < slots && (flat[t].v[0] & mark_bit) == 0; };
+  auto finite = [&](Tet_id t) {
+    return flat[t].v[0] != ghost_vertex && flat[t].v[1] != ghost_vertex && flat[t].v[2] != ghost_vertex;
+  };
+  // Triangles are consistently oriented, so the apex lies on the same side
+  // of every finite one: slot k of a tetrahedron holds vertex at[k] of its
+  // triangle (at[] swaps 0 and 1 when the apex is below; its own inverse).
+  int at[3] = {0, 1, 2};
+  for(Tet_id t = 0; t < slots; ++t) {
+    if(!triangle(t) || !finite(t)) continue;
+    const Vertex_id* tv = flat[t].v;
+    if(orientation(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(apex)) < 0)
+      std::swap(at[0], at[1]);
+    break;
+  }
+  // Where each vertex of a triangle goes, by its index j in the triangle:
+  // slot at[j] of the cone; slot under_at[j] of the ghost below (the cone's
+  // facet 3 seen from outside); in the ghost of a hull edge whose triangle
+  // has the infinite vertex at g, the apex takes slot at[g], the infinite
+  // vertex slot 3 and the edge's other end j the slot left, 3 - at[g] - at[j].
+  int under_at[3];
+  for(int j = 0; j < 3; ++j) under_at[j] = facet_vertex[3][at[j]]; // facet_vertex[3] is its own inverse
+  auto infinite_index = [&](Tet_id t) {
+    return flat[t].v[0] == ghost_vertex ? 0 : flat[t].v[1] == ghost_vertex ? 1 : flat[t].v[2] == ghost_vertex ? 2 : 3;
+  };
+  auto hull_at = [&](Tet_id t, int j) { return 3 - at[infinite_index(t)] - at[j]; };
+
+  // The ghost under triangle t: its slot, or no_tet for a free or infinite slot.
+  std::vector<Tet_id> below(slots, no_tet);
+  std::size_t finite_count = 0, hull_edges = 0;
+  for(Tet_id t = 0; t < slots; ++t) {
+    if(!triangle(t)) continue;
+    Vertex_id* tv = mesh.vertex_ids(t);
+    const int g = infinite_index(t);
+    if(g == 3) {
+      ++finite_count;
+      for(int j = 0; j < 3; ++j) tv[at[j]] = flat[t].v[j];
+      tv[3] = apex;
+      continue;
+    }
+    // (x, y, ghost, apex) in the slots at[] would be positive with a point
+    // beyond the hull edge in the ghost's place, which is beyond the hull
+    // facet of the apex too: moving the ghost to slot 3 and swapping the
+    // other two (hull_at) keeps that orientation, the ghosts' convention.
+    ++hull_edges;
+    for(int j = 0; j < 3; ++j)
+      if(j != g) tv[hull_at(t, j)] = flat[t].v[j];
+    tv[at[g]] = apex;
+    tv[3] = ghost_vertex;
+  }
+  mesh.reserve_tets(finite_count);
+  for(Tet_id t = 0; t < slots; ++t) {
+    if(!triangle(t) || infinite_index(t) != 3) continue;
+    const Tet_id b = mesh.new_tet();
+    below[t] = b;
+    Vertex_id* bv = mesh.vertex_ids(b);
+    for(int j = 0; j < 3; ++j) bv[under_at[j]] = flat[t].v[j];
+    bv[3] = ghost_vertex;
+  }
+  for(Tet_id t = 0; t < slots; ++t) {
+    if(!triangle(t)) continue;
+    const int g = infinite_index(t);
+    if(g == 3) {
+      // Facet at[j] of the cone holds the apex and the edge opposite vertex
+      // j: across it, the neighbouring triangle's cone or hull ghost; facet
+      // 3 is the triangle itself, the ghost below across.  The ghost below
+      // has the edge opposite j in its facet under_at[j]: across it, the
+      // ghost below the neighbouring triangle, or the facet of the hull
+      // ghost of that edge opposite its apex.
+      const Tet_id b = below[t];
+      for(int j = 0; j < 3; ++j) {
+        const Facet_code across = flat[t].n[j];
+        const Tet_id u = tet_of(across);
+        const int i = facet_of(across);
+        const int ug = infinite_index(u);
+        mesh.tets[t].n[at[j]] = ug == 3 ? facet_code(u, at[i]) : facet_code(u, 3);
+        mesh.tets[b].n[under_at[j]] = ug == 3 ? facet_code(below[u], under_at[i]) : facet_code(u, at[ug]);
+      }
+      mesh.tets[t].n[3] = facet_code(b, 3);
+      mesh.tets[b].n[3] = facet_code(t, 3);
+      continue;
+    }
+    // The hull ghost of edge xy: opposite the infinite vertex, the cone
+    // across the edge; opposite the apex, the ghost below that cone; opposite
+    // x (or y), the hull ghost of the other hull edge at y (or x).
+    const Facet_code inner = flat[t].n[g];
+    const Tet_id f = tet_of(inner);
+    mesh.tets[t].n[3] = facet_code(f, at[facet_of(inner)]);
+    mesh.tets[t].n[at[g]] = facet_code(below[f], under_at[facet_of(inner)]);
+    for(int j = 0; j < 3; ++j) {
+      if(j == g) continue;
+      const Facet_code across = flat[t].n[j];
+      const Tet_id h = tet_of(across);
+      mesh.tets[t].n[hull_at(t, j)] = facet_code(h, hull_at(h, facet_of(across)));
+    }
+  }
+  if(mesh.with_sub_determinants)
+    for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
+      if(mesh.is_live(t)) update_sub_determinants(mesh, t);
+  mesh.live_tets = 2 * finite_count + hull_edges;
+  mesh.ghost_tets = finite_count + hull_edges;
+}
+
 // Which tetrahedra a kernel may walk through, delete and refill (paper §3.2).
 // Sequentially, all of them.  `shares_neighbors`: whether a tetrahedron next
 // to a cavity may at the same time be next to another kernel's cavity.

@@ -30,7 +30,8 @@
 // lower-dimensional cell, as in CGAL, so Flat_storage::is_ghost (slot 3) is
 // meaningless below dimension 3; `ghost_tets` still counts the cells that
 // have it.  Nothing here runs in dimension 3: lifting to 3D drops the CGAL
-// triangulation and rebuilds the arrays from scratch
+// triangulation; from dimension 2 the triangles become tetrahedra in their
+// slots (cone_over_triangles), from below the arrays are built anew
 // (Triangulation_core::lift_to_dimension_3).
 
 #ifndef CGAL_FDT3_INTERNAL_LOWER_DIMENSIONS_H
@@ -178,6 +179,59 @@ public:
     return where;
   }
 
+  // locate(p, start) for an insertion of p, which is in the plane of the
+  // triangles in dimension 2: a visibility walk over CGAL's triangles with
+  // the filtered coplanar orientation.  A point strictly inside a finite
+  // triangle gets that triangle (FACET, li = 3), CGAL's only answer there;
+  // a point on an edge or a vertex, or outside the hull, gets CGAL's answer
+  // from the triangle reached.  CGAL's locate() first asks, exactly, whether
+  // p is off the plane: for points in the plane that is an exact evaluation
+  // of a zero every time, a third of the insertion of 1e5 coplanar points.
+  Location locate_in_plane(const Reference_point& p, Reference_cell start) const
+  {
+    if(delaunay_->dimension() != 2) return locate(p, start);
+    const Reference_vertex infinite = delaunay_->infinite_vertex();
+    Reference_cell c = start == Reference_cell() ? infinite->cell() : start;
+    if(c->has_vertex(infinite)) c = c->neighbor(c->index(infinite));
+    const double q[3] = {p.x(), p.y(), p.z()};
+    double corner[3][3];
+    auto load = [&](Reference_cell cell) {
+      for(int i = 0; i < 3; ++i) {
+        const Reference_point& w = cell->vertex(i)->point();
+        corner[i][0] = w.x();
+        corner[i][1] = w.y();
+        corner[i][2] = w.z();
+      }
+    };
+    load(c);
+    // Finite triangles are consistently oriented: one sign for all.
+    const int inward = coplanar_orientation(corner[0], corner[1], corner[2]);
+    // A visibility walk ends on a Delaunay triangulation; the bound only
+    // guards against a broken one (2n - 2 triangles in all).
+    for(std::size_t steps = 0; steps <= 2 * delaunay_->number_of_vertices(); ++steps) {
+      bool on_a_line = false;
+      int exit = -1;
+      for(int i = 0; i < 3 && exit < 0; ++i) {
+        const int side = coplanar_orientation(corner[(i + 1) % 3], corner[(i + 2) % 3], q);
+        if(side == -inward) exit = i;
+        on_a_line = on_a_line || side == 0;
+      }
+      if(exit < 0) {
+        if(on_a_line) break;
+        Location where;
+        where.type = Delaunay::FACET;
+        where.cell = c;
+        where.li = 3;
+        return where;
+      }
+      const Reference_cell next = c->neighbor(exit);
+      if(next->has_vertex(infinite)) break;
+      c = next;
+      load(c);
+    }
+    return locate(p, c);
+  }
+
   // Vertex v of m (record written, id final: the next id) inserted as
   // CGAL's insert(p, start).  Returns v, or the older vertex at the same
   // point (then nothing changed and the caller drops v's record).  The point
@@ -186,7 +240,7 @@ public:
   // insert_and_give_new_cells.
   Vertex_id insert(Flat_storage& m, Vertex_id v, Reference_cell start, std::vector<Tet_id>* around)
   {
-    return insert(m, v, locate(point(m, v), start), around);
+    return insert(m, v, locate_in_plane(point(m, v), start), around);
   }
   // As CGAL's insert(p, lt, c, li, lj), `where` being locate(p)'s answer.
   Vertex_id insert(Flat_storage& m, Vertex_id v, const Location& where, std::vector<Tet_id>* around)
@@ -227,7 +281,7 @@ public:
   Vertex_id insert_unsynchronised(const Flat_storage& m, Vertex_id v, Reference_cell start)
   {
     const Reference_point p = point(m, v);
-    const Location where = locate(p, start);
+    const Location where = locate_in_plane(p, start);
     const std::size_t vertices_before = delaunay_->number_of_vertices();
     Reference_vertex r;
     if(delaunay_->dimension() == 2 && where.type != Delaunay::VERTEX &&

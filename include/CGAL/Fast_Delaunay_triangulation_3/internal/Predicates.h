@@ -233,6 +233,22 @@ inline bool collinear(const double* p, const double* q, const double* r)
   return predicates_detail::collinear_exact(p, q, r);
 }
 
+// CGAL's coplanar_orientation(p, q, r): the 2D orientation in the first of
+// the xy, yz and xz projections where it is not zero.  When the xy one is
+// certainly not zero (Shewchuk's orient2d bound, 3 eps rounded up to 4 eps,
+// with differences rounded in double) it is the answer; otherwise CGAL's
+// exact predicate decides.  Products that may have underflowed have no bound.
+inline int coplanar_orientation(const double* p, const double* q, const double* r)
+{
+  const double left = (q[0] - p[0]) * (r[1] - p[1]);
+  const double right = (q[1] - p[1]) * (r[0] - p[0]);
+  const double det = left - right;
+  const double magnitude = std::fabs(left) + std::fabs(right);
+  if(magnitude > 1e-280 && std::fabs(det) > 4 * std::numeric_limits<double>::epsilon() / 2 * magnitude)
+    return det > 0 ? 1 : -1;
+  return predicates_detail::coplanar_orientation_exact(p, q, r);
+}
+
 // The floating-point determinants.  orientation_determinant has CGAL's sign;
 // in_sphere_determinant is Shewchuk's insphere(p,q,r,s,t), positive for t
 // inside when orient3d(p,q,r,s) > 0, i.e. when CGAL's orientation is negative.

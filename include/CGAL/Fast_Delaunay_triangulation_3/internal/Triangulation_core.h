@@ -199,7 +199,7 @@ public:
       mesh.reserve_tets(expected_tets(n));
       insert_new_vertices(first_new, order.round_end, rounds_in_curve_order, duplicate_of, nullptr);
     } else if(extend_affine_hull(first_new, hull_simplex(simplex), simplex) == 3) {
-      lift_to_dimension_3(first_new, order.round_end, rounds_in_curve_order, duplicate_of);
+      lift_to_dimension_3(first_new, simplex[3], order.round_end, rounds_in_curve_order, duplicate_of);
     } else {
       // Duplicates are found by CGAL's insertion, which writes final ids.
       added = insert_below_dimension_3(first_new, duplicate_of);
@@ -547,11 +547,16 @@ private:
       }
     } else if(extend_affine_hull(0, -1, simplex) == 3) {
       lower.stop();
-      create_initial_tetrahedron(simplex);
+      if(dimension == 2) {
+        cone_over_triangles(mesh, v); // v is the one vertex off the plane
+        hint_ = mesh.first_live_tet();
+      } else {
+        create_initial_tetrahedron(simplex);
+        mesh.reserve_tets(expected_tets(number_of_vertices()));
+        std::vector<Vertex_id> no_duplicates; // the live vertices are distinct
+        insert_range(0, vertex_slots(), static_cast<Vertex_id>(vertex_slots()), no_duplicates, simplex);
+      }
       dimension = 3;
-      mesh.reserve_tets(expected_tets(number_of_vertices()));
-      std::vector<Vertex_id> no_duplicates; // the live vertices are distinct
-      insert_range(0, vertex_slots(), static_cast<Vertex_id>(vertex_slots()), no_duplicates, simplex);
       new_cells.clear();
       for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
         if(mesh.is_live(t)) new_cells.push_back(t);
@@ -753,18 +758,33 @@ private:
   }
 
 
-  // The new vertices [first_new, end) make the points span 3D: CGAL's
-  // triangulation is dropped and the tetrahedra of all vertices are built
-  // from the first four affinely independent ones (in the order of the ids).
-  void lift_to_dimension_3(Vertex_id first_new, const std::vector<std::size_t>& round_end,
+  // The new vertices [first_new, end) make the points span 3D; `apex` is
+  // the first of them off the affine hull of the old ones.  CGAL's
+  // triangulation is dropped.  From dimension 2, the apex is joined to the
+  // triangles, as CGAL does (cone_over_triangles), and the other new
+  // vertices are inserted into those tetrahedra.  From a lower dimension
+  // (few cells), the tetrahedra of all vertices are built from the first
+  // four affinely independent ones.
+  void lift_to_dimension_3(Vertex_id first_new, Vertex_id apex, const std::vector<std::size_t>& round_end,
                            bool rounds_in_curve_order, std::vector<Vertex_id>& duplicate_of)
   {
     const Clock::time_point t0 = Clock::now();
+    lower.stop();
+    if(dimension == 2) {
+      CGAL_assertion(apex >= first_new);
+      const Vertex_id skip[4] = {apex, apex, apex, apex};
+      cone_over_triangles(mesh, apex);
+      hint_ = mesh.first_live_tet();
+      dimension = 3;
+      last_report.init_seconds = seconds(t0, Clock::now());
+      mesh.reserve_tets(expected_tets(vertex_slots() - first_new));
+      insert_new_vertices(first_new, round_end, rounds_in_curve_order, duplicate_of, skip);
+      return;
+    }
     Vertex_id simplex[4];
     const int spanned = extend_affine_hull(0, -1, simplex);
     CGAL_assertion(spanned == 3);
     (void)spanned;
-    lower.stop();
     create_initial_tetrahedron(simplex);
     dimension = 3;
     last_report.init_seconds = seconds(t0, Clock::now());

@@ -351,20 +351,8 @@ public:
   }
   void lift(const Flat_storage& m, const Lifted_cells& lifted)
   {
-    std::vector<Record> records;
-    std::vector<std::array<Vertex_id, 4>> cells;
-    records.swap(records_);
-    cells.swap(cells_);
-    for(std::size_t s = 0; s < records.size(); ++s) {
-      const Tet_id t = lifted.find(cells[s].data());
-      if(t == Lifted_cells::none) continue;
-      if(t >= records_.size()) {
-        records_.resize(t + 1);
-        cells_.resize(t + 1, std::array<Vertex_id, 4>{{ghost_vertex, ghost_vertex, ghost_vertex, ghost_vertex}});
-      }
-      records_[t] = std::move(records[s]);
-      std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, cells_[t].begin());
-    }
+    for(Tet_id t = 0; t < records_.size(); ++t)
+      if(lifted.keeps(t, cells_[t].data())) std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, cells_[t].begin());
   }
 
   // Slot t holds a new cell: a default record when next read.

@@ -20,8 +20,8 @@
 //                 (Lower_dimensional_triangulation::Renamed_cell): their
 //                 infos are re-keyed to the new vertex ids.  When one
 //                 vertex v lifts dimension 2 to 3, CGAL makes each triangle
-//                 (a, b, c) the tetrahedron (a, b, c, v) in place, and the
-//                 Delaunay triangulation has exactly those (Lifted_cells).
+//                 (a, b, c) the tetrahedron (a, b, c, v) in place, and so
+//                 does the lift here (Lifted_cells).
 //
 // Without infos (the default data structure) both arrays are empty types
 // and insertion takes the plain path: nothing is paid for them.
@@ -57,40 +57,28 @@ struct Cell_info_of { typedef void type; };
 template <class Tds>
 struct Cell_info_of<Tds, std::void_t<typename Tds::Cell::Info>> { typedef typename Tds::Cell::Info type; };
 
-// After one vertex v lifted dimension 2 to 3: the slot of the tetrahedron
-// (a, b, c, v) of each triangle (a, b, c) of dimension 2.
+// After one vertex v lifted dimension 2 to 3 (cone_over_triangles): each
+// triangle (a, b, c) is the tetrahedron (a, b, c, v) in its own slot.
 class Lifted_cells
 {
 public:
-  static constexpr Tet_id none = Tet_id(-1);
+  Lifted_cells(const Flat_storage& m, Vertex_id v) : m_(m), v_(v) {}
 
-  Lifted_cells(const Flat_storage& m, Vertex_id v) : v_(v)
+  // Whether slot t, whose info was kept under the ids `key` (a triangle's:
+  // the last one no_vertex), holds the tetrahedron of that triangle.
+  bool keeps(Tet_id t, const Vertex_id* key) const
   {
-    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
-      if(!m.is_live(t) || std::find(m.vertex_ids(t), m.vertex_ids(t) + 4, v) == m.vertex_ids(t) + 4) continue;
-      Key k;
-      std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, k.begin());
-      std::sort(k.begin(), k.end());
-      cells_.push_back({k, t});
-    }
-    std::sort(cells_.begin(), cells_.end());
-  }
-
-  // `key`: the four ids a triangle's info was kept under (the last one
-  // no_vertex); none for other keys or a triangle that is gone.
-  Tet_id find(const Vertex_id* key) const
-  {
-    if(key[3] != no_vertex) return none;
-    Key k = {key[0], key[1], key[2], v_};
-    std::sort(k.begin(), k.end());
-    const auto it = std::lower_bound(cells_.begin(), cells_.end(), std::make_pair(k, Tet_id(0)));
-    return it != cells_.end() && it->first == k ? it->second : none;
+    if(key[3] != no_vertex || t >= m_.number_of_slots() || !m_.is_live(t)) return false;
+    const Vertex_id* tv = m_.vertex_ids(t);
+    const Vertex_id expected[4] = {key[0], key[1], key[2], v_};
+    for(Vertex_id w : expected)
+      if(std::find(tv, tv + 4, w) == tv + 4) return false;
+    return true;
   }
 
 private:
-  typedef std::array<Vertex_id, 4> Key;
+  const Flat_storage& m_;
   Vertex_id v_;
-  std::vector<std::pair<Key, Tet_id>> cells_;
 };
 
 // One info in a vector: a wrapper, so that Info = bool gets real references.
@@ -165,19 +153,12 @@ public:
     if(t >= entries_.size() || !std::equal(before, before + 4, entries_[t].cell)) return;
     std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, entries_[t].cell);
   }
-  // The infos of the triangles go to their tetrahedra; the slots were
-  // renumbered by the lift, so every entry moves.
+  // The infos of the triangles stay with their tetrahedra, in their slots.
   void lift(const Flat_storage& m, const Lifted_cells& lifted)
   {
-    std::vector<Entry> before;
-    before.swap(entries_);
-    for(Entry& e : before) {
-      const Tet_id t = lifted.find(e.cell);
-      if(t == Lifted_cells::none) continue;
-      if(t >= entries_.size()) entries_.resize(t + 1);
-      entries_[t].info = std::move(e.info);
-      std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, entries_[t].cell);
-    }
+    for(Tet_id t = 0; t < entries_.size(); ++t)
+      if(lifted.keeps(t, entries_[t].cell))
+        std::copy(m.vertex_ids(t), m.vertex_ids(t) + 4, entries_[t].cell);
   }
 
   // Slot t holds a new cell: its info is Info() when next read.
