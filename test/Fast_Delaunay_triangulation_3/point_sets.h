@@ -1,7 +1,7 @@
 // Point distributions shared by the tests and the benchmarks: uniform,
 // Gaussian, clustered, on a sphere, shuffled integer grid, near a sphere or
 // a torus (noisy scans of closed surfaces), with duplicates, far from the
-// origin, tiny, in a plane.  Deterministic for a given seed.
+// origin, tiny, in a plane, each at its own scale.  Deterministic for a given seed.
 #ifndef CGAL_FDT3_TEST_POINT_SETS_H
 #define CGAL_FDT3_TEST_POINT_SETS_H
 
@@ -148,6 +148,21 @@ inline std::vector<Xyz> plane_points(std::size_t n, std::uint64_t seed = 10)
   return p;
 }
 
+// Every point at its own scale: uniform in [-1, 1]^3 times 10^e, e an
+// integer uniform in [-200, 200].
+inline std::vector<Xyz> multiscale_points(std::size_t n, std::uint64_t seed = 11)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-200, 200);
+  std::vector<Xyz> p(n);
+  for(Xyz& q : p) {
+    const double scale = std::pow(10.0, exponent(rng));
+    q = {scale * unit(rng), scale * unit(rng), scale * unit(rng)};
+  }
+  return p;
+}
+
 inline std::vector<Xyz> scaled_points(std::size_t n, double scale = 1e-9, std::uint64_t seed = 8)
 {
   std::vector<Xyz> p = uniform_points(n, seed);
@@ -201,6 +216,7 @@ inline std::vector<Xyz> make_points(const std::string& name, std::size_t n, std:
   if(name == "offset") return offset_points(n, 1e9, seed + 6);
   if(name == "tiny") return scaled_points(n, 1e-9, seed + 7);
   if(name == "plane") return plane_points(n, seed + 10);
+  if(name == "scales") return multiscale_points(n, seed + 11);
   throw std::invalid_argument("unknown distribution '" + name + "'");
 }
 

@@ -242,4 +242,51 @@ TEST(Brio, DegenerateInputs)
   }
 }
 
+// Points at scales 10^-200 to 10^200 nearly all share the grid's central
+// cell: the runs of equal keys follow the Moore curve of their own bounding
+// box, while the keys of the grid still order every round.
+TEST(Brio, PointsSharingACellFollowTheCurveOfTheirOwnBox)
+{
+  const std::size_t n = 20000;
+  std::mt19937_64 random(8);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> exponent(-200, 200);
+  std::vector<double> xyz(3 * n);
+  for(std::size_t i = 0; i < n; ++i) {
+    const double scale = std::pow(10.0, exponent(random));
+    for(int a = 0; a < 3; ++a)
+      xyz[3 * i + a] = scale * unit(random);
+  }
+  const Brio_order brio = brio_order(xyz.data(), n, 3, 2);
+  ASSERT_TRUE(is_permutation_of_indices(brio.order, n));
+  EXPECT_TRUE(rounds_follow_moore_curve(xyz, brio));
+  EXPECT_EQ(brio.order, brio_order(xyz.data(), n, 3, 1).order);
+  const std::vector<std::uint64_t> keys = moore_keys_of(xyz);
+  std::size_t runs = 0;
+  for(std::size_t r = 1; r < brio.round_end.size(); ++r)
+    for(std::size_t a = brio.round_end[r - 1]; a < brio.round_end[r];) {
+      std::size_t b = a + 1;
+      while(b < brio.round_end[r] && keys[brio.order[b]] == keys[brio.order[a]])
+        ++b;
+      if(b - a >= 32) {
+        ++runs;
+        double lo[3], hi[3];
+        for(int c = 0; c < 3; ++c)
+          lo[c] = hi[c] = xyz[3 * brio.order[a] + c];
+        for(std::size_t k = a; k < b; ++k)
+          for(int c = 0; c < 3; ++c) {
+            lo[c] = std::min(lo[c], xyz[3 * brio.order[k] + c]);
+            hi[c] = std::max(hi[c], xyz[3 * brio.order[k] + c]);
+          }
+        const Moore_grid grid(lo, hi, Moore_curve::max_bits_per_axis);
+        const Moore_curve curve(Moore_curve::max_bits_per_axis);
+        for(std::size_t k = a + 1; k < b; ++k)
+          ASSERT_LE(grid.key(curve, &xyz[3 * brio.order[k - 1]]), grid.key(curve, &xyz[3 * brio.order[k]]))
+              << "round " << r << ", position " << k;
+      }
+      a = b;
+    }
+  EXPECT_GT(runs, 0u) << "the input does not test what it should";
+}
+
 } // namespace test_brio
