@@ -229,6 +229,9 @@ TEST(Brio, DegenerateInputs)
     inputs.back()[3 * i + 1] = inputs.back()[3 * i + 2] = 0.5;
   inputs.push_back(uniform_points(n, 4, 2e300, -1e300));              // near the ends of the double range
   inputs.push_back(uniform_points(n, 5, 1e-300, 1e6));                // tiny extent, large offset (all equal)
+  inputs.push_back(std::vector<double>(3 * n, 0.0));                  // two points a subnormal apart, repeated:
+  for(std::size_t i = 0; i < n; i += 2)                               // one cell even on their own box
+    inputs.back()[3 * i] = 4.9e-324;
   std::vector<double> grid;                                           // integer grid with duplicates
   for(std::size_t i = 0; i < n; ++i)
     for(int a = 0; a < 3; ++a)

@@ -296,7 +296,9 @@ TEST(Incremental, BatchesThatStayPlanarThenLift)
 // The lift joins the apex to the triangles in their slots and puts the
 // ghosts below in free slots: after removals in dimension 2 (free slots
 // among the triangles), from either side of the plane, from a grid (ties),
-// by insert(p) and by a range with more points in the plane and off it.
+// by insert(p) and by a range with more points in the plane and off it,
+// with the in-sphere sub-determinants cached or not (the insertions after
+// the lift read those of the new tetrahedra).
 TEST(Incremental, LiftAfterRemovalsFromEitherSide)
 {
   // Squares of side 3 in the plane 2x - 2y + z = 0 (cocircular ties).
@@ -304,9 +306,13 @@ TEST(Incremental, LiftAfterRemovalsFromEitherSide)
   for(int u = 0; u < 9; ++u)
     for(int v = 0; v < 7; ++v) grid.emplace_back(u + 2 * v, 2 * u + v, 2 * u - 2 * v);
   const std::vector<Point> points = shuffled(grid, 31);
+  for(const bool cached : {false, true})
   for(const Point& apex : {Point(2, 1, 9), Point(2, 1, -9), Point(40, -3, 0)}) {
-    SCOPED_TRACE("apex " + std::to_string(apex.x()) + " " + std::to_string(apex.z()));
-    Fast_dt fast(points.begin(), points.end());
+    SCOPED_TRACE("apex " + std::to_string(apex.x()) + " " + std::to_string(apex.z()) +
+                 (cached ? ", sub-determinants cached" : ""));
+    Fast_dt fast;
+    fast.set_sub_determinants(cached);
+    fast.insert(points.begin(), points.end());
     Cgal_dt cgal(points.begin(), points.end());
     ASSERT_EQ(fast.dimension(), 2);
     for(std::size_t k = 0; k < points.size(); k += 5) {

@@ -5,7 +5,8 @@
 // within a round keeps walks short. The rounds follow HXT (HXT_FACTS §2): ratio 7.5 down from n while a round would
 // exceed 2048 points, so 1e6 points give 316 | 2054 | 15407 | 115556 | 866667. Unlike HXT, everything is one radix
 // sort of 64-bit (key, index) pairs, key = (round << 3b) | Moore index with b = brio_bits_per_axis(n); the first
-// round's low bits are hash bits, which leaves it in random order.
+// round's low bits are hash bits, which leaves it in random order. Only runs of points that share a key are sorted
+// again, along the curve of their own box (sort_shared_cells).
 
 #ifndef CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_BRIO_H
 #define CGAL_FAST_DELAUNAY_TRIANGULATION_3_INTERNAL_BRIO_H
@@ -195,6 +196,7 @@ namespace brio_detail {
 
 // Runs of at least this many points in one cell of the grid are sorted again.
 constexpr std::size_t shared_cell_min = 32;
+constexpr std::size_t shared_cell_budget = 64;
 
 // Points of a round that share one cell of the grid (a cluster far smaller
 // than the bounding box, or points whose scales lie far apart, 1e-200 to
@@ -202,9 +204,14 @@ constexpr std::size_t shared_cell_min = 32;
 // triangulation: on 2e4 points of scales 10^-200 to 10^200 a walk took 829
 // steps, and most steps an exact predicate.  Each such run of equal keys in
 // items[begin, n) is sorted again along the Moore curve of its own bounding
-// box, and so on in the runs that this leaves (each level shrinks the box by
-// 2^20 / 1.5 at least, so exponents bound the depth).  Keys stay as they
-// are; the order within a run depends on the points only.
+// box, and so on in the runs that this leaves.  A run whose points all get
+// one key again (points a few subnormals apart) is left as it is, so every
+// run sorted again is smaller than the one it came from.  The points sorted
+// again, all levels together, are at most shared_cell_budget times those of
+// the rounds: points at 400 decades of scales need about 35 times, while a
+// block of repeated points approached by a chain of points at every binary
+// scale would be sorted again at each of ~100 levels.  Keys stay as they are;
+// the order within a run depends on the points only.
 inline void sort_shared_cells(const double* xyz, std::vector<Key_value<std::uint32_t>>& items, std::size_t begin)
 {
   std::vector<std::pair<std::size_t, std::size_t>> runs;
@@ -219,12 +226,15 @@ inline void sort_shared_cells(const double* xyz, std::vector<Key_value<std::uint
   };
   push_runs(begin, items.size(), [&](std::size_t k) { return items[k].key; });
   if(runs.empty()) return;
+  std::size_t budget = shared_cell_budget * (items.size() - begin);
   const int bits = Moore_curve::max_bits_per_axis;
   const Moore_curve curve(bits);
   std::vector<std::pair<std::uint64_t, std::uint32_t>> cell;
   while(!runs.empty()) {
     const std::size_t a = runs.back().first, b = runs.back().second;
     runs.pop_back();
+    if(b - a > budget) continue;
+    budget -= b - a;
     double lo[3], hi[3];
     for(int axis = 0; axis < 3; ++axis)
       lo[axis] = hi[axis] = xyz[3 * std::size_t(items[a].value) + axis];
@@ -239,6 +249,7 @@ inline void sort_shared_cells(const double* xyz, std::vector<Key_value<std::uint
     for(std::size_t k = a; k < b; ++k)
       cell[k - a] = {grid.key(curve, xyz + 3 * std::size_t(items[k].value)), items[k].value};
     std::sort(cell.begin(), cell.end());
+    if(cell.front().first == cell.back().first) continue;
     for(std::size_t k = a; k < b; ++k)
       items[k].value = cell[k - a].second;
     const std::size_t before = runs.size();

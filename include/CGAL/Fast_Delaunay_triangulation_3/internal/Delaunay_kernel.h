@@ -241,7 +241,7 @@ inline void make_initial_tetrahedron(Flat_storage& mesh, Vertex_id simplex[4])
 // edge) and `apex` is a vertex not in their plane.  Each triangle becomes in
 // its slot the tetrahedron of it and the apex, an infinite triangle (hull
 // edge ab) the ghost on the hull facet (a, b, apex), and each finite
-// triangle gets a ghost under it in a new slot.  This is what CGAL's
+// triangle gets a ghost under it in a free or new slot.  This is what CGAL's
 // insertion outside the affine hull does: every circumscribed sphere of a
 // cone cuts the plane in the empty circumcircle of its triangle, so the
 // tetrahedra are Delaunay; for a point of the plane on such a sphere, the

@@ -11,7 +11,8 @@
 // Dimensions below 3: the (distinct) vertices and CGAL's lower-dimensional
 // cells, kept by a CGAL triangulation updated point by point
 // (Lower_dimensions.h); the first insertion that makes the points span 3D
-// drops it and builds the tetrahedra of all of them.  Vertex ids never change
+// drops it and joins a vertex off the plane to the triangles (from dimension
+// 2) or builds the tetrahedra of all points (from below).  Vertex ids never change
 // once given, except that a bulk insertion removes its own duplicates before
 // returning; a removed vertex leaves a dead record (Flat_storage.h), which
 // only a move of that vertex revives.
@@ -546,16 +547,11 @@ private:
         return existing;
       }
     } else if(extend_affine_hull(0, -1, simplex) == 3) {
+      // One vertex lifts the dimension by one: the others are coplanar.
+      CGAL_assertion(dimension == 2);
       lower.stop();
-      if(dimension == 2) {
-        cone_over_triangles(mesh, v); // v is the one vertex off the plane
-        hint_ = mesh.first_live_tet();
-      } else {
-        create_initial_tetrahedron(simplex);
-        mesh.reserve_tets(expected_tets(number_of_vertices()));
-        std::vector<Vertex_id> no_duplicates; // the live vertices are distinct
-        insert_range(0, vertex_slots(), static_cast<Vertex_id>(vertex_slots()), no_duplicates, simplex);
-      }
+      cone_over_triangles(mesh, v);
+      hint_ = mesh.first_live_tet();
       dimension = 3;
       new_cells.clear();
       for(Tet_id t = 0; t < mesh.number_of_slots(); ++t)
