@@ -286,24 +286,8 @@ inline void brio_order(const double* xyz, std::size_t n, std::uint64_t seed, int
 {
   workspace.layout = brio_keys(xyz, n, seed, num_threads, workspace.items);
   radix_sort(workspace.items, workspace.scratch, workspace.layout.key_bits, num_threads);
-  const std::size_t first_round_end = std::size_t(
-      std::partition_point(workspace.items.begin(), workspace.items.end(),
-                           [&](const Key_value<std::uint32_t>& item) {
-                             return (item.key >> workspace.layout.index_bits) == 0;
-                           }) -
-      workspace.items.begin());
-  brio_detail::sort_shared_cells(xyz, workspace.items, first_round_end);
 
-  const std::vector<Key_value<std::uint32_t>>& items = workspace.items;
-  result.order.resize(n);
-  const int chunks = chunk_count(n, num_threads);
-  for_each_chunk(chunks, [&](int c) {
-    const std::size_t end = chunk_begin(n, chunks, c + 1);
-    for(std::size_t k = chunk_begin(n, chunks, c); k < end; ++k)
-      result.order[k] = items[k].value;
-  });
-
-  result.box = workspace.layout.box;
+  std::vector<Key_value<std::uint32_t>>& items = workspace.items;
   const int index_bits = workspace.layout.index_bits;
   result.round_end.resize(workspace.layout.rounds);
   for(std::size_t r = 0; r < workspace.layout.rounds; ++r)
@@ -311,6 +295,16 @@ inline void brio_order(const double* xyz, std::size_t n, std::uint64_t seed, int
       std::partition_point(items.begin(), items.end(),
                            [&](const Key_value<std::uint32_t>& item) { return (item.key >> index_bits) <= r; }) -
       items.begin());
+  brio_detail::sort_shared_cells(xyz, items, result.round_end[0]);
+
+  result.order.resize(n);
+  const int chunks = chunk_count(n, num_threads);
+  for_each_chunk(chunks, [&](int c) {
+    const std::size_t end = chunk_begin(n, chunks, c + 1);
+    for(std::size_t k = chunk_begin(n, chunks, c); k < end; ++k)
+      result.order[k] = items[k].value;
+  });
+  result.box = workspace.layout.box;
 }
 
 inline Brio_order brio_order(const double* xyz, std::size_t n, std::uint64_t seed = 0, int num_threads = 1)

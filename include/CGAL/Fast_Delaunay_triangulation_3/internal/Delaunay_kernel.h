@@ -259,15 +259,16 @@ inline void cone_over_triangles(Flat_storage& mesh, Vertex_id apex)
   std::vector<Tet_record> flat(mesh.tets.begin(), mesh.tets.end());
   // Triangle slots (the ghosts below take free slots, which are not).
   auto triangle = [&](Tet_id t) { return t < slots && (flat[t].v[0] & mark_bit) == 0; };
-  auto finite = [&](Tet_id t) {
-    return flat[t].v[0] != ghost_vertex && flat[t].v[1] != ghost_vertex && flat[t].v[2] != ghost_vertex;
+  // Where triangle t has the infinite vertex; 3 for a finite triangle.
+  auto infinite_index = [&](Tet_id t) {
+    return flat[t].v[0] == ghost_vertex ? 0 : flat[t].v[1] == ghost_vertex ? 1 : flat[t].v[2] == ghost_vertex ? 2 : 3;
   };
   // Triangles are consistently oriented, so the apex lies on the same side
   // of every finite one: slot k of a tetrahedron holds vertex at[k] of its
   // triangle (at[] swaps 0 and 1 when the apex is below; its own inverse).
   int at[3] = {0, 1, 2};
   for(Tet_id t = 0; t < slots; ++t) {
-    if(!triangle(t) || !finite(t)) continue;
+    if(!triangle(t) || infinite_index(t) != 3) continue;
     const Vertex_id* tv = flat[t].v;
     if(orientation(mesh.point(tv[0]), mesh.point(tv[1]), mesh.point(tv[2]), mesh.point(apex)) < 0)
       std::swap(at[0], at[1]);
@@ -280,9 +281,6 @@ inline void cone_over_triangles(Flat_storage& mesh, Vertex_id apex)
   // vertex slot 3 and the edge's other end j the slot left, 3 - at[g] - at[j].
   int under_at[3];
   for(int j = 0; j < 3; ++j) under_at[j] = facet_vertex[3][at[j]]; // facet_vertex[3] is its own inverse
-  auto infinite_index = [&](Tet_id t) {
-    return flat[t].v[0] == ghost_vertex ? 0 : flat[t].v[1] == ghost_vertex ? 1 : flat[t].v[2] == ghost_vertex ? 2 : 3;
-  };
   auto hull_at = [&](Tet_id t, int j) { return 3 - at[infinite_index(t)] - at[j]; };
 
   // The ghost under triangle t: its slot, or no_tet for a free or infinite slot.
