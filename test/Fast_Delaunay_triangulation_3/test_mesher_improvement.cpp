@@ -171,8 +171,8 @@ void expect_improved(mi::Constrained_mesh& cm, const mi::Improvement_options& op
   expect_same_invariants(before, invariants(cm));
   EXPECT_EQ(stats.bad_before, bad);
   EXPECT_EQ(stats.bad_after, count_below(cm, options.quality_threshold));
-  EXPECT_DOUBLE_EQ(stats.min_gamma_before, worst);
-  EXPECT_DOUBLE_EQ(stats.min_gamma_after, worst_gamma(cm));
+  EXPECT_SAME_GAMMA(stats.min_gamma_before, worst);
+  EXPECT_SAME_GAMMA(stats.min_gamma_after, worst_gamma(cm));
   EXPECT_GE(worst_gamma(cm), worst);
   EXPECT_LT(stats.bad_after, bad / 10);
   EXPECT_GT(stats.edge_removals, 0u);

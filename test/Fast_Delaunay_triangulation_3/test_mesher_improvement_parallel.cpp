@@ -86,7 +86,7 @@ TEST(ImprovementInPartitions, DihedralTargetStatisticsMatchARecount)
     EXPECT_GT(stats.relocations + stats.edge_removals, 0u);
     EXPECT_EQ(stats.bad_before, count_below(original, options.quality_threshold));
     EXPECT_EQ(stats.bad_after, count_below(cm, options.quality_threshold));
-    EXPECT_DOUBLE_EQ(stats.min_gamma_after, worst_gamma(cm));
+    EXPECT_SAME_GAMMA(stats.min_gamma_after, worst_gamma(cm));
     EXPECT_NEAR(stats.min_dihedral_after, smallest_dihedral_degrees(cm), 1e-9);
     EXPECT_GT(stats.min_dihedral_after, stats.min_dihedral_before);
     mi::Constrained_mesh again = original;

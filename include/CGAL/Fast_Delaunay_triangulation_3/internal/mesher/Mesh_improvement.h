@@ -230,7 +230,10 @@ private:
     std::vector<std::array<Vertex_id, 4>> ball_corners;
     std::vector<std::array<Vertex_id, 4>> made;
     std::vector<Tet_id> slots;
-    std::vector<Vertex_id> inside, on_boundary; // star_of_region's scratch
+    // star_of_region's scratch: per vertex, the number of the last call
+    // that met it on a boundary facet.
+    std::vector<std::uint32_t> boundary_stamp;
+    std::uint32_t stamp = 0;
 
     std::size_t slots_left() const { return free_slots->size() + (fresh_end - next_fresh); }
     Tet_id new_slot()
@@ -928,6 +931,12 @@ private:
     return id == v ? p : cm_.mesh.point(id);
   }
 
+  // The quality of tetrahedron tv with v at p.
+  double quality_with(const std::array<Vertex_id, 4>& tv, Vertex_id v, const double* p) const
+  {
+    return quality(corner(tv[0], v, p), corner(tv[1], v, p), corner(tv[2], v, p), corner(tv[3], v, p));
+  }
+
   // The worst quality of `ball` with v at p (v's record is not changed), or
   // any value at most `enough` once it is known to be at most that: a
   // candidate position fails on its first tetrahedron no better than the
@@ -937,8 +946,7 @@ private:
   {
     double worst = 1;
     for(const auto& tv : ball) {
-      worst = std::min(worst, quality(corner(tv[0], v, p), corner(tv[1], v, p), corner(tv[2], v, p),
-                                      corner(tv[3], v, p)));
+      worst = std::min(worst, quality_with(tv, v, p));
       if(worst <= enough) return worst;
     }
     return worst;
@@ -977,18 +985,22 @@ private:
     for(int a = 0; a < 3; ++a) out[a] = (x[a] + y[a] + z[a]) / 3 + height * n[a];
   }
 
-  // Orders `ball` by quality with v at p, the worst first.
-  void worst_first(std::vector<std::array<Vertex_id, 4>>& ball, Vertex_id v, const double* p) const
+  // A tetrahedron of the position search: its corners, the regular apex of
+  // its facet opposite the moving vertex (which does not move with it), and
+  // its quality with that vertex where the search stands.
+  struct Search_tet
   {
-    CGAL_assertion(ball.size() <= max_ball);
-    std::pair<double, std::array<Vertex_id, 4>> keyed[max_ball];
-    const std::size_t n = ball.size();
-    for(std::size_t k = 0; k < n; ++k) {
-      const auto& tv = ball[k];
-      keyed[k] = {quality(corner(tv[0], v, p), corner(tv[1], v, p), corner(tv[2], v, p), corner(tv[3], v, p)), tv};
-    }
-    std::sort(keyed, keyed + n);
-    for(std::size_t k = 0; k < n; ++k) ball[k] = keyed[k].second;
+    double quality;
+    double apex[3];
+    std::array<Vertex_id, 4> corners;
+  };
+
+  // t.apex for the slot of tetrahedron t.corners that holds v.
+  void set_apex(Search_tet& t, Vertex_id v) const
+  {
+    int s = 0;
+    while(t.corners[s] != v) ++s;
+    regular_apex(t.corners.data(), s, t.apex);
   }
 
   // The search for v's position in `ball` (reordered), from `start`: toward the weighted
@@ -997,34 +1009,59 @@ private:
   // better) toward the neighbours' mean (Laplacian), halving each step until
   // the worst quality goes up; each of `rounds` rounds starts where the last
   // one ended.  Returns the worst quality at `best` (start's if nothing helps).
+  // The tetrahedra are ordered worst first at `start`, so that a candidate
+  // position fails on its first tetrahedron no better than the best so far.
+  // `tets`: the caller's search tetrahedra of `ball`, in its order, with
+  // their apexes set (they are reordered with it), for searches of one ball
+  // from several starts; null: found here.  `at_start`: ball_quality(ball,
+  // v, start) of the ball in its order on entry.
+  // Each apex and each quality at a round's start is computed once: they
+  // were most of the improvement's time.
   double best_position(std::vector<std::array<Vertex_id, 4>>& ball, Vertex_id v, const double* start,
-                       int rounds, double* best) const
+                       int rounds, double* best, Search_tet* tets = nullptr, double* at_start = nullptr) const
   {
-    worst_first(ball, v, start);
+    const std::size_t n = ball.size();
+    CGAL_assertion(n <= max_ball);
+    Search_tet own[max_ball];
+    if(tets == nullptr) {
+      tets = own;
+      for(std::size_t k = 0; k < n; ++k) {
+        tets[k].corners = ball[k];
+        set_apex(tets[k], v);
+      }
+    }
+    double worst_in_order = 1;
+    for(std::size_t k = 0; k < n; ++k) {
+      tets[k].quality = quality_with(tets[k].corners, v, start);
+      if(worst_in_order > 0) worst_in_order = std::min(worst_in_order, tets[k].quality);
+    }
+    if(at_start) *at_start = worst_in_order;
+    std::sort(tets, tets + n, [](const Search_tet& x, const Search_tet& y) {
+      return x.quality != y.quality ? x.quality < y.quality : x.corners < y.corners;
+    });
+    for(std::size_t k = 0; k < n; ++k) ball[k] = tets[k].corners;
     std::copy(start, start + 3, best);
-    double best_quality = ball_quality(ball, v, best);
+    double best_quality = n > 0 ? std::min(1.0, tets[0].quality) : 1;
     for(int round = 0; round < rounds; ++round) {
       const double here[3] = {best[0], best[1], best[2]};
+      if(round > 0)
+        for(std::size_t k = 0; k < n; ++k) tets[k].quality = quality_with(tets[k].corners, v, here);
       double targets[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
       double weight_sum = 0, worst_quality = 2;
       std::size_t neighbours = 0;
-      for(const auto& tv : ball) {
-        int s = 0;
-        while(tv[s] != v) ++s;
-        double apex[3];
-        regular_apex(tv.data(), s, apex);
-        const double g = quality(corner(tv[0], v, here), corner(tv[1], v, here), corner(tv[2], v, here),
-                                 corner(tv[3], v, here));
+      for(std::size_t k = 0; k < n; ++k) {
+        const Search_tet& t = tets[k];
+        const double g = t.quality;
         const double weight = 1 / std::max(g, 1e-3);
-        for(int a = 0; a < 3; ++a) targets[0][a] += weight * apex[a];
+        for(int a = 0; a < 3; ++a) targets[0][a] += weight * t.apex[a];
         weight_sum += weight;
         if(g < worst_quality) {
           worst_quality = g;
-          std::copy(apex, apex + 3, targets[1]);
+          std::copy(t.apex, t.apex + 3, targets[1]);
         }
         for(int i = 0; i < 4; ++i)
-          if(tv[i] != v) {
-            for(int a = 0; a < 3; ++a) targets[2][a] += cm_.mesh.point(tv[i])[a];
+          if(t.corners[i] != v) {
+            for(int a = 0; a < 3; ++a) targets[2][a] += cm_.mesh.point(t.corners[i])[a];
             ++neighbours;
           }
       }
@@ -1061,9 +1098,8 @@ private:
       w.ball_corners.push_back({tv[0], tv[1], tv[2], tv[3]});
     }
     const double here[3] = {m.point(v)[0], m.point(v)[1], m.point(v)[2]};
-    const double worst = ball_quality(w.ball_corners, v, here);
-    double best[3];
-    const double best_quality = best_position(w.ball_corners, v, here, 1, best);
+    double best[3], worst;
+    const double best_quality = best_position(w.ball_corners, v, here, 1, best, nullptr, &worst);
     // A move must gain 1%: smaller gains do not change the mesh's figures,
     // but they keep the vertices around active pass after pass.
     if(!(best_quality > 1.01 * worst) || !ball_positive(w.ball_corners, v, best)) return Outcome::unchanged;
@@ -1096,10 +1132,7 @@ private:
   {
     std::size_t n = 0;
     for(const auto& tv : tets)
-      n += quality(corner(tv[0], c, p), corner(tv[1], c, p), corner(tv[2], c, p), corner(tv[3], c, p)) <
-                   options_.quality_threshold
-               ? 1
-               : 0;
+      n += quality_with(tv, c, p) < options_.quality_threshold ? 1 : 0;
     return n;
   }
 
@@ -1128,14 +1161,15 @@ private:
     // exactly the best: an obtuse facet does a little better above its
     // circumcentre); if the worst of those cannot beat the best split so
     // far, the searches are not run.
+    // The apexes are the searches' too.
+    CGAL_assertion(w.made.size() <= max_ball);
+    Search_tet tets[max_ball];
     double ceiling = 1;
-    for(const auto& tv : w.made) {
-      int s = 0;
-      while(tv[s] != c) ++s;
-      double apex[3];
-      regular_apex(tv.data(), s, apex);
-      ceiling = std::min(
-          ceiling, quality(corner(tv[0], c, apex), corner(tv[1], c, apex), corner(tv[2], c, apex), corner(tv[3], c, apex)));
+    for(std::size_t k = 0; k < w.made.size(); ++k) {
+      Search_tet& t = tets[k];
+      t.corners = w.made[k];
+      set_apex(t, c);
+      ceiling = std::min(ceiling, quality_with(t.corners, c, t.apex));
       if(ceiling - worst <= best.gain) return;
     }
     // Two starts: the given one (the split simplex's centre, or a facet's
@@ -1155,9 +1189,9 @@ private:
     double inner[3];
     for(int a = 0; a < 3; ++a) inner[a] = (start[a] + centre[a] / double(corners)) / 2;
     double p[3], p_inner[3];
-    double q = best_position(w.made, c, start, candidate_search_rounds, p);
+    double q = best_position(w.made, c, start, candidate_search_rounds, p, tets);
     if(q < options_.quality_threshold) {
-      const double q_inner = best_position(w.made, c, inner, candidate_search_rounds, p_inner);
+      const double q_inner = best_position(w.made, c, inner, candidate_search_rounds, p_inner, tets);
       if(q_inner > q) {
         q = q_inner;
         std::copy(p_inner, p_inner + 3, p);
@@ -1198,17 +1232,17 @@ private:
   // vertex star, and the cone would drop that vertex.  False then, and
   // when a facet inside the region is constrained (an input triangle would
   // go).
-  bool star_of_region(const Tet_id* region, std::size_t region_size, Vertex_id c,
-                      std::vector<std::array<Vertex_id, 4>>& made, std::vector<Vertex_id>& inside,
-                      std::vector<Vertex_id>& on_boundary) const
+  bool star_of_region(Worker& w, const Tet_id* region, std::size_t region_size, Vertex_id c) const
   {
     const Flat_storage& m = cm_.mesh;
-    made.clear();
-    inside.clear();
-    on_boundary.clear();
+    w.made.clear();
+    if(w.boundary_stamp.size() < m.vertices.size()) w.boundary_stamp.resize(m.vertices.size(), 0);
+    if(++w.stamp == 0) {
+      std::fill(w.boundary_stamp.begin(), w.boundary_stamp.end(), 0);
+      w.stamp = 1;
+    }
     for(std::size_t k = 0; k < region_size; ++k) {
       const Vertex_id* sv = m.vertex_ids(region[k]);
-      inside.insert(inside.end(), sv, sv + 4);
       for(int f = 0; f < 4; ++f) {
         const Tet_id u = m.neighbor(region[k], f);
         if(std::find(region, region + region_size, u) != region + region_size) {
@@ -1217,15 +1251,16 @@ private:
         }
         std::array<Vertex_id, 4> q = {sv[0], sv[1], sv[2], sv[3]};
         q[f] = c;
-        made.push_back(q);
-        for(int i = 0; i < 3; ++i) on_boundary.push_back(sv[facet_vertex[f][i]]);
+        w.made.push_back(q);
+        for(int i = 0; i < 3; ++i) w.boundary_stamp[sv[facet_vertex[f][i]]] = w.stamp;
       }
     }
-    std::sort(inside.begin(), inside.end());
-    inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
-    std::sort(on_boundary.begin(), on_boundary.end());
-    on_boundary.erase(std::unique(on_boundary.begin(), on_boundary.end()), on_boundary.end());
-    return inside.size() == on_boundary.size(); // on_boundary is a subset of inside
+    for(std::size_t k = 0; k < region_size; ++k) {
+      const Vertex_id* sv = m.vertex_ids(region[k]);
+      for(int i = 0; i < 4; ++i)
+        if(w.boundary_stamp[sv[i]] != w.stamp) return false;
+    }
+    return true;
   }
 
   // How a Steiner cavity grows from t across unconstrained facets of its
@@ -1320,7 +1355,7 @@ private:
       // Each tetrahedron of the pair gives three, c in place of one of the
       // facet's corners in turn: the cone over the pair's six outer facets.
       const Tet_id region[2] = {t, u};
-      const bool cone = star_of_region(region, 2, c, w.made, w.inside, w.on_boundary);
+      const bool cone = star_of_region(w, region, 2, c);
       CGAL_assertion(cone); // the shared facet is not constrained, and all five vertices are outer
       (void)cone;
       double centroid[3] = {0, 0, 0};
@@ -1360,7 +1395,7 @@ private:
         cavities_tried.push_back(std::move(sorted));
         // t alone would be a 1-4 split of t from inside it, which cannot
         // make a sliver's four corners into good tetrahedra.
-        if(region_size < 2 || !star_of_region(region, region_size, c, w.made, w.inside, w.on_boundary)) continue;
+        if(region_size < 2 || !star_of_region(w, region, region_size, c)) continue;
         consider_split(w, c, region, region_size, apex, corners_size, best);
       }
     }
