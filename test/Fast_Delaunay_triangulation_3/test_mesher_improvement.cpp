@@ -264,6 +264,57 @@ TEST(Improvement, ReplacementRefusesARegionItDoesNotClose)
   EXPECT_EQ(before.live_tets, cm.mesh.live_tets);
 }
 
+// A region past large_replacement (its facets matched by sorting): the star
+// of a point at the centre of a sphere of points, about 400 tetrahedra,
+// replaced by the same tetrahedra in reverse order, so that every slot
+// changes and every facet is linked anew; then by a set that leaves a hole.
+TEST(Improvement, ReplacementOfALargeRegion)
+{
+  CGAL::Random random(7);
+  std::vector<K::Point_3> input{K::Point_3(0.01, 0.02, 0.03)};
+  while(input.size() < 201) {
+    const double x = random.get_double(-1, 1), y = random.get_double(-1, 1), z = random.get_double(-1, 1);
+    const double r = std::sqrt(x * x + y * y + z * z);
+    if(r > 0.1 && r <= 1) input.emplace_back(x / r, y / r, z / r);
+  }
+  mi::Constrained_mesh cm = delaunay_mesh(input, [](double) { return 1; });
+  Vertex_id centre = 0;
+  while(!(cm.mesh.point(centre)[0] == 0.01)) ++centre;
+  std::vector<Tet_id> region;
+  for(Tet_id t = 0; t < cm.mesh.number_of_slots(); ++t) {
+    const Vertex_id* tv = cm.mesh.vertex_ids(t);
+    if(cm.mesh.is_live(t) && std::find(tv, tv + 4, centre) != tv + 4) region.push_back(t);
+  }
+  ASSERT_GT(2 * region.size(), fdt::large_replacement);
+  std::vector<std::array<Vertex_id, 4>> made;
+  for(auto t = region.rbegin(); t != region.rend(); ++t) {
+    const Vertex_id* tv = cm.mesh.vertex_ids(*t);
+    made.push_back({tv[0], tv[1], tv[2], tv[3]});
+  }
+  // The slot of made[k] is region[k]: a tetrahedron's constrained facets
+  // (on the sphere) must follow it there.
+  std::vector<std::uint8_t> constrained(made.size());
+  for(std::size_t k = 0; k < made.size(); ++k) constrained[k] = cm.constrained[region[region.size() - 1 - k]];
+  fdt::Replacement_scratch scratch;
+  std::vector<Tet_id> slots(made.size());
+  const std::size_t live = cm.mesh.live_tets;
+  fdt::replace_tetrahedra(cm.mesh, region.data(), region.size(), made.data(), made.size(), slots.data(), scratch);
+  EXPECT_TRUE(slots == region);
+  for(std::size_t k = 0; k < made.size(); ++k) cm.constrained[slots[k]] = constrained[k];
+  EXPECT_EQ(cm.mesh.live_tets, live);
+  expect_valid(cm);
+  EXPECT_EQ(cm.mesh.vertex_ids(region.front())[0], made.front()[0]);
+
+  // One tetrahedron short and one too many on another facet: refused, as is.
+  const fdt::Flat_storage before = cm.mesh;
+  made.pop_back();
+  made.push_back(made.front());
+  EXPECT_THROW(fdt::replace_tetrahedra(cm.mesh, region.data(), region.size(), made.data(), made.size(), slots.data(),
+                                       scratch),
+               std::logic_error);
+  EXPECT_EQ(std::memcmp(before.tets.data(), cm.mesh.tets.data(), before.tets.size() * sizeof(fdt::Tet_record)), 0);
+}
+
 // Through the public mesher: the step on and off, seen by the quality report.
 TEST(Improvement, MesherOptimizesByDefault)
 {
@@ -485,8 +536,26 @@ TEST(Improvement, ImproveMeshRefusesBadMeshes)
   Tetrahedral_mesh not_a_facet = good;
   not_a_facet.triangles[0] = {not_a_facet.triangles[0][0], not_a_facet.triangles[1][1], not_a_facet.triangles[2][2]};
   expect_refused(not_a_facet, "triangle #0 is not a facet");
-  Tetrahedral_mesh hole = good; // tetrahedron 10 has an input triangle
-  hole.tetrahedra.erase(hole.tetrahedra.begin() + 10);
+  // Without a tetrahedron that has an input triangle and its fourth vertex
+  // inside: that triangle is no facet any more (and the hole's boundary is
+  // a closed manifold, which an apex on the surface would pinch).
+  std::vector<char> on_surface_point(good.points.size(), 0);
+  for(const auto& tri : good.triangles)
+    for(std::uint32_t v : tri) on_surface_point[v] = 1;
+  auto has_input_triangle = [&](const std::array<std::uint32_t, 4>& t) {
+    if(std::count_if(t.begin(), t.end(), [&](std::uint32_t v) { return on_surface_point[v] != 0; }) != 3)
+      return false;
+    for(const auto& tri : good.triangles) {
+      int shared = 0;
+      for(std::uint32_t v : tri) shared += std::count(t.begin(), t.end(), v) > 0 ? 1 : 0;
+      if(shared == 3) return true;
+    }
+    return false;
+  };
+  const auto on_surface = std::find_if(good.tetrahedra.begin(), good.tetrahedra.end(), has_input_triangle);
+  ASSERT_NE(on_surface, good.tetrahedra.end());
+  Tetrahedral_mesh hole = good;
+  hole.tetrahedra.erase(hole.tetrahedra.begin() + (on_surface - good.tetrahedra.begin()));
   hole.subdomain.pop_back();
   expect_refused(hole, "is not a facet of the tetrahedra");
   Tetrahedral_mesh doubled = good;

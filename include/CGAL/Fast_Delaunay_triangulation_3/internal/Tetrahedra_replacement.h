@@ -6,8 +6,10 @@
 // the same region and have the same boundary facets.  A 2-3 flip is the
 // region of two tetrahedra sharing a facet, a 3-2 or 4-4 flip and Shewchuk's
 // edge removal the ring of tetrahedra around an edge, small polyhedron
-// reconnection any star-shaped cavity; the TDS view (Flat_tds.h) and the
-// mesh improvement (mesher/Mesh_improvement.h) both call this.
+// reconnection any star-shaped cavity; the TDS view (Flat_tds.h), the mesh
+// improvement (mesher/Mesh_improvement.h) and the mesher's boundary
+// recovery (mesher/Boundary_recovery.h, a component and its ghosts) call
+// this.
 //
 // What the caller guarantees: the new tetrahedra are combinatorially
 // positively oriented (the ghost vertex, if any, in slot 3), their facets
@@ -17,6 +19,12 @@
 // `free_slot(t)`; every boundary facet linked both ways to the tetrahedron
 // outside, which is the only record outside the region that is written.
 // No predicate is evaluated: geometry is the caller's business.
+//
+// A flip's region has a few tetrahedra, and linear scans match its facets
+// fastest; a region of more than `large_replacement` old and new
+// tetrahedra (no flip and no Steiner cavity of the mesh improvement, but a
+// component of the mesher's boundary recovery: up to a few thousand) has
+// its facets matched by sorting instead.
 
 #ifndef CGAL_FDT3_INTERNAL_TETRAHEDRA_REPLACEMENT_H
 #define CGAL_FDT3_INTERNAL_TETRAHEDRA_REPLACEMENT_H
@@ -76,6 +84,104 @@ inline bool in_region(const Tet_id* region, std::size_t n, Tet_id t)
   return std::find(region, region + n, t) != region + n;
 }
 
+constexpr std::size_t large_replacement = 256;
+
+namespace replacement_detail {
+
+// A facet of a made tetrahedron: its sorted vertex ids and 4 k + f.
+struct Made_facet
+{
+  Vertex_id key[3];
+  std::size_t at;
+};
+
+inline bool key_less(const Vertex_id* x, const Vertex_id* y)
+{
+  return std::lexicographical_compare(x, x + 3, y, y + 3);
+}
+inline bool same_key(const Vertex_id* x, const Vertex_id* y) { return x[0] == y[0] && x[1] == y[1] && x[2] == y[2]; }
+
+// The facets of a large region found and matched by sorting; the same
+// contract as replace_tetrahedra below.
+template <class New_slot, class Free_slot>
+void replace_large_region(Flat_storage& m, const Tet_id* region, std::size_t region_size,
+                          const std::array<Vertex_id, 4>* made, std::size_t made_size, Tet_id* slots,
+                          Replacement_counts& counts, New_slot new_slot, Free_slot free_slot)
+{
+  std::vector<Tet_id> members(region, region + region_size);
+  std::sort(members.begin(), members.end());
+  std::vector<Region_facet> boundary;
+  std::ptrdiff_t ghosts_before = 0;
+  for(std::size_t r = 0; r < region_size; ++r) {
+    const Tet_id t = region[r];
+    ghosts_before += m.is_ghost(t) ? 1 : 0;
+    for(int f = 0; f < 4; ++f) {
+      if(std::binary_search(members.begin(), members.end(), m.neighbor(t, f))) continue;
+      Region_facet b;
+      sorted_facet_key(m.vertex_ids(t), f, b.key);
+      b.outside = m.neighbor_code(t, f);
+      b.used = false;
+      boundary.push_back(b);
+    }
+  }
+  std::sort(boundary.begin(), boundary.end(),
+            [](const Region_facet& x, const Region_facet& y) { return key_less(x.key, y.key); });
+  std::vector<Made_facet> facets(4 * made_size);
+  for(std::size_t k = 0; k < made_size; ++k)
+    for(int f = 0; f < 4; ++f) {
+      Made_facet& facet = facets[4 * k + f];
+      sorted_facet_key(made[k].data(), f, facet.key);
+      facet.at = 4 * k + f;
+    }
+  std::sort(facets.begin(), facets.end(),
+            [](const Made_facet& x, const Made_facet& y) { return key_less(x.key, y.key); });
+
+  // Every key: two made facets and no boundary facet, or one of each.
+  // Checked in full before anything is written.
+  std::vector<std::pair<std::size_t, std::size_t>> inner;      // two made facets (4 k + f)
+  std::vector<std::pair<std::size_t, std::size_t>> on_boundary; // made facet, boundary index
+  std::size_t b = 0;
+  for(std::size_t i = 0; i < facets.size();) {
+    std::size_t j = i + 1;
+    while(j < facets.size() && same_key(facets[j].key, facets[i].key)) ++j;
+    while(b < boundary.size() && key_less(boundary[b].key, facets[i].key)) ++b;
+    const bool in_boundary = b < boundary.size() && same_key(boundary[b].key, facets[i].key);
+    if(j - i == 2 && !in_boundary) {
+      inner.emplace_back(facets[i].at, facets[i + 1].at);
+    } else if(j - i == 1 && in_boundary && (b + 1 == boundary.size() || !same_key(boundary[b + 1].key, facets[i].key))) {
+      on_boundary.emplace_back(facets[i].at, b);
+    } else {
+      throw std::logic_error("replace_tetrahedra: the new tetrahedra do not have the region's boundary");
+    }
+    i = j;
+  }
+  if(on_boundary.size() != boundary.size())
+    throw std::logic_error("replace_tetrahedra: the new tetrahedra do not have the region's boundary");
+
+  for(std::size_t k = 0; k < made_size; ++k) slots[k] = k < region_size ? region[k] : new_slot();
+  for(std::size_t r = made_size; r < region_size; ++r) free_slot(region[r]);
+  std::ptrdiff_t ghosts_after = 0;
+  for(std::size_t k = 0; k < made_size; ++k) {
+    Tet_record& record = m.tets[slots[k]];
+    for(int i = 0; i < 4; ++i) record.v[i] = made[k][i];
+    ghosts_after += made[k][3] == ghost_vertex ? 1 : 0;
+  }
+  auto code_of = [&](std::size_t at) { return facet_code(slots[at / 4], static_cast<int>(at % 4)); };
+  for(const auto& pair : inner) {
+    m.neighbor_code(code_of(pair.first)) = code_of(pair.second);
+    m.neighbor_code(code_of(pair.second)) = code_of(pair.first);
+  }
+  for(const auto& link : on_boundary) {
+    const Facet_code outside = boundary[link.second].outside;
+    m.neighbor_code(code_of(link.first)) = outside;
+    m.neighbor_code(outside) = code_of(link.first);
+  }
+  counts.live += std::ptrdiff_t(made_size) - std::ptrdiff_t(region_size);
+  counts.ghost += ghosts_after - ghosts_before;
+}
+
+} // namespace replacement_detail
+
 // `slots` receives the slot of each made tetrahedron.  Throws logic_error,
 // before anything is written, when the made tetrahedra do not close up with
 // the region's boundary (a caller's bug: the arrays stay as they were).
@@ -86,6 +192,11 @@ void replace_tetrahedra(Flat_storage& m, const Tet_id* region, std::size_t regio
                         Free_slot free_slot)
 {
   CGAL_precondition(region_size > 0 && made_size > 0);
+  if(region_size + made_size > large_replacement) {
+    replacement_detail::replace_large_region(m, region, region_size, made, made_size, slots, counts, new_slot,
+                                             free_slot);
+    return;
+  }
   std::vector<Region_facet>& boundary = scratch.boundary;
   boundary.clear();
   std::ptrdiff_t ghosts_before = 0;
