@@ -262,6 +262,19 @@ TEST(Improvement, ReplacementRefusesARegionItDoesNotClose)
   ASSERT_EQ(before.tets.size(), cm.mesh.tets.size());
   EXPECT_EQ(std::memcmp(before.tets.data(), cm.mesh.tets.data(), before.tets.size() * sizeof(fdt::Tet_record)), 0);
   EXPECT_EQ(before.live_tets, cm.mesh.live_tets);
+
+  // The full check: the region's own tetrahedra pass; with one of them
+  // twice, every boundary facet is still covered (the linear path's count
+  // passes) but two inner facets have three tetrahedra.
+  std::vector<std::array<Vertex_id, 4>> same;
+  for(Tet_id t : region) {
+    const Vertex_id* tv = cm.mesh.vertex_ids(t);
+    same.push_back({tv[0], tv[1], tv[2], tv[3]});
+  }
+  EXPECT_NO_THROW(fdt::check_replacement(cm.mesh, region.data(), region.size(), same.data(), same.size()));
+  same.push_back(same.front());
+  EXPECT_THROW(fdt::check_replacement(cm.mesh, region.data(), region.size(), same.data(), same.size()),
+               std::logic_error);
 }
 
 // A region past large_replacement (its facets matched by sorting): the star

@@ -52,7 +52,8 @@ struct Region_facet
   bool used;
 };
 
-// Reused buffers: a replacement allocates nothing once they have grown.
+// Reused buffers: a small replacement (any flip) allocates nothing once
+// they have grown.
 struct Replacement_scratch
 {
   std::vector<Region_facet> boundary;
@@ -101,30 +102,37 @@ inline bool key_less(const Vertex_id* x, const Vertex_id* y)
 }
 inline bool same_key(const Vertex_id* x, const Vertex_id* y) { return x[0] == y[0] && x[1] == y[1] && x[2] == y[2]; }
 
-// The facets of a large region found and matched by sorting; the same
-// contract as replace_tetrahedra below.
-template <class New_slot, class Free_slot>
-void replace_large_region(Flat_storage& m, const Tet_id* region, std::size_t region_size,
-                          const std::array<Vertex_id, 4>* made, std::size_t made_size, Tet_id* slots,
-                          Replacement_counts& counts, New_slot new_slot, Free_slot free_slot)
+// The facets of a region paired by sorting: each made facet with its twin
+// or with the boundary facet it covers.
+struct Sorted_matching
 {
+  std::vector<Region_facet> boundary;                      // sorted by key
+  std::vector<std::pair<std::size_t, std::size_t>> inner;  // two made facets (4 k + f)
+  std::vector<std::pair<std::size_t, std::size_t>> covers; // made facet, boundary index
+  std::ptrdiff_t ghosts_before = 0;
+};
+
+// Throws logic_error, reading the storage only, unless every key is that
+// of two made facets and no boundary facet, or of one of each.
+inline Sorted_matching match_by_sorting(const Flat_storage& m, const Tet_id* region, std::size_t region_size,
+                                        const std::array<Vertex_id, 4>* made, std::size_t made_size)
+{
+  Sorted_matching r;
   std::vector<Tet_id> members(region, region + region_size);
   std::sort(members.begin(), members.end());
-  std::vector<Region_facet> boundary;
-  std::ptrdiff_t ghosts_before = 0;
-  for(std::size_t r = 0; r < region_size; ++r) {
-    const Tet_id t = region[r];
-    ghosts_before += m.is_ghost(t) ? 1 : 0;
+  for(std::size_t k = 0; k < region_size; ++k) {
+    const Tet_id t = region[k];
+    r.ghosts_before += m.is_ghost(t) ? 1 : 0;
     for(int f = 0; f < 4; ++f) {
       if(std::binary_search(members.begin(), members.end(), m.neighbor(t, f))) continue;
       Region_facet b;
       sorted_facet_key(m.vertex_ids(t), f, b.key);
       b.outside = m.neighbor_code(t, f);
       b.used = false;
-      boundary.push_back(b);
+      r.boundary.push_back(b);
     }
   }
-  std::sort(boundary.begin(), boundary.end(),
+  std::sort(r.boundary.begin(), r.boundary.end(),
             [](const Region_facet& x, const Region_facet& y) { return key_less(x.key, y.key); });
   std::vector<Made_facet> facets(4 * made_size);
   for(std::size_t k = 0; k < made_size; ++k)
@@ -135,11 +143,7 @@ void replace_large_region(Flat_storage& m, const Tet_id* region, std::size_t reg
     }
   std::sort(facets.begin(), facets.end(),
             [](const Made_facet& x, const Made_facet& y) { return key_less(x.key, y.key); });
-
-  // Every key: two made facets and no boundary facet, or one of each.
-  // Checked in full before anything is written.
-  std::vector<std::pair<std::size_t, std::size_t>> inner;      // two made facets (4 k + f)
-  std::vector<std::pair<std::size_t, std::size_t>> on_boundary; // made facet, boundary index
+  const std::vector<Region_facet>& boundary = r.boundary;
   std::size_t b = 0;
   for(std::size_t i = 0; i < facets.size();) {
     std::size_t j = i + 1;
@@ -147,17 +151,26 @@ void replace_large_region(Flat_storage& m, const Tet_id* region, std::size_t reg
     while(b < boundary.size() && key_less(boundary[b].key, facets[i].key)) ++b;
     const bool in_boundary = b < boundary.size() && same_key(boundary[b].key, facets[i].key);
     if(j - i == 2 && !in_boundary) {
-      inner.emplace_back(facets[i].at, facets[i + 1].at);
+      r.inner.emplace_back(facets[i].at, facets[i + 1].at);
     } else if(j - i == 1 && in_boundary && (b + 1 == boundary.size() || !same_key(boundary[b + 1].key, facets[i].key))) {
-      on_boundary.emplace_back(facets[i].at, b);
+      r.covers.emplace_back(facets[i].at, b);
     } else {
       throw std::logic_error("replace_tetrahedra: the new tetrahedra do not have the region's boundary");
     }
     i = j;
   }
-  if(on_boundary.size() != boundary.size())
+  if(r.covers.size() != boundary.size())
     throw std::logic_error("replace_tetrahedra: the new tetrahedra do not have the region's boundary");
+  return r;
+}
 
+// A large region replaced: the same contract as replace_tetrahedra below.
+template <class New_slot, class Free_slot>
+void replace_large_region(Flat_storage& m, const Tet_id* region, std::size_t region_size,
+                          const std::array<Vertex_id, 4>* made, std::size_t made_size, Tet_id* slots,
+                          Replacement_counts& counts, New_slot new_slot, Free_slot free_slot)
+{
+  const Sorted_matching matching = match_by_sorting(m, region, region_size, made, made_size);
   for(std::size_t k = 0; k < made_size; ++k) slots[k] = k < region_size ? region[k] : new_slot();
   for(std::size_t r = made_size; r < region_size; ++r) free_slot(region[r]);
   std::ptrdiff_t ghosts_after = 0;
@@ -167,20 +180,30 @@ void replace_large_region(Flat_storage& m, const Tet_id* region, std::size_t reg
     ghosts_after += made[k][3] == ghost_vertex ? 1 : 0;
   }
   auto code_of = [&](std::size_t at) { return facet_code(slots[at / 4], static_cast<int>(at % 4)); };
-  for(const auto& pair : inner) {
+  for(const auto& pair : matching.inner) {
     m.neighbor_code(code_of(pair.first)) = code_of(pair.second);
     m.neighbor_code(code_of(pair.second)) = code_of(pair.first);
   }
-  for(const auto& link : on_boundary) {
-    const Facet_code outside = boundary[link.second].outside;
-    m.neighbor_code(code_of(link.first)) = outside;
-    m.neighbor_code(outside) = code_of(link.first);
+  for(const auto& cover : matching.covers) {
+    const Facet_code outside = matching.boundary[cover.second].outside;
+    m.neighbor_code(code_of(cover.first)) = outside;
+    m.neighbor_code(outside) = code_of(cover.first);
   }
   counts.live += std::ptrdiff_t(made_size) - std::ptrdiff_t(region_size);
-  counts.ghost += ghosts_after - ghosts_before;
+  counts.ghost += ghosts_after - matching.ghosts_before;
 }
 
 } // namespace replacement_detail
+
+// Throws logic_error unless `made` closes up with the region's boundary:
+// replace_tetrahedra's check, in full whatever the size (the linear path's
+// own check of inner facets is an assertion), without writing anything.
+// For a caller replacing several regions that must refuse before the first.
+inline void check_replacement(const Flat_storage& m, const Tet_id* region, std::size_t region_size,
+                              const std::array<Vertex_id, 4>* made, std::size_t made_size)
+{
+  (void)replacement_detail::match_by_sorting(m, region, region_size, made, made_size);
+}
 
 // `slots` receives the slot of each made tetrahedron.  Throws logic_error,
 // before anything is written, when the made tetrahedra do not close up with

@@ -231,8 +231,8 @@ inline bool may_meet_triangle(const Flat_storage& m, Tet_id t, const Triangle_ke
 
   // On the triangle's plane, t may only have vertices of the triangle: t
   // then meets it in the face of t those vertices span, shared by both.
-  // A corner of the triangle is on its plane without a test: t always has
-  // one (it is found from a corner's star), and the exact evaluation of
+  // A corner of the triangle is on its plane without a test: every
+  // tetrahedron of a corner's star has one, and the exact evaluation of
   // that zero was most of the region's time on flat-faced parts.
   int below = 0, above = 0;
   bool foreign_on_plane = false;
@@ -840,24 +840,31 @@ inline bool recover_by_flips(const Flat_storage& m, const Recovery_region& regio
   return true;
 }
 
-// Component c of the region, and the ghosts on its facets on the convex
-// hull, replaced in place by `tets` (which tile the same volume and have
-// its walls) and ghosts on their own hull facets: those neither two of them
-// share nor a wall.  The border of the component's hull patch is kept (a
-// wall through each of its edges holds it), so the new ghosts close up with
-// the old ones around it.  The rest of the mesh is not touched.
-inline void replace_component(Flat_storage& m, const Recovery_region& region, std::size_t c,
-                              std::vector<std::array<Vertex_id, 4>> tets, Replacement_scratch& scratch)
+// A region of the mesh and the tetrahedra that replace it.
+struct Component_replacement
 {
-  std::vector<Tet_id> old(region.tets.begin() + region.component_begin[c],
-                          region.tets.begin() + region.component_begin[c + 1]);
+  std::vector<Tet_id> old;
+  std::vector<std::array<Vertex_id, 4>> made;
+};
+
+// Component c of the region with the ghosts on its facets on the convex
+// hull, and `tets` (which tile the same volume and have its walls) with
+// ghosts on their own hull facets: those neither two of them share nor a
+// wall.  The border of the component's hull patch is kept (a wall through
+// each of its edges holds it), so the new ghosts close up with the old
+// ones around it.
+inline Component_replacement component_replacement(const Flat_storage& m, const Recovery_region& region,
+                                                   std::size_t c, std::vector<std::array<Vertex_id, 4>> tets)
+{
+  Component_replacement r;
+  r.old.assign(region.tets.begin() + region.component_begin[c], region.tets.begin() + region.component_begin[c + 1]);
   std::vector<Triangle_key> walls;
-  const std::size_t finite = old.size();
+  const std::size_t finite = r.old.size();
   for(std::size_t k = 0; k < finite; ++k)
     for(int f = 0; f < 4; ++f) {
-      const Tet_id u = m.neighbor(old[k], f);
-      if(m.is_ghost(u)) old.push_back(u); // a ghost's one finite neighbour is this
-      else if(!region.in_region[u]) walls.push_back(facet_key(m, old[k], f));
+      const Tet_id u = m.neighbor(r.old[k], f);
+      if(m.is_ghost(u)) r.old.push_back(u); // a ghost's one finite neighbour is this
+      else if(!region.in_region[u]) walls.push_back(facet_key(m, r.old[k], f));
     }
   std::sort(walls.begin(), walls.end());
   struct Keyed_facet
@@ -873,33 +880,27 @@ inline void replace_component(Flat_storage& m, const Recovery_region& region, st
                                          tets[k][facet_vertex[f][2]]),
                         4 * k + f});
   std::sort(facets.begin(), facets.end(), [](const Keyed_facet& x, const Keyed_facet& y) { return x.key < y.key; });
-  const std::size_t made = tets.size();
+  r.made = std::move(tets);
   for(std::size_t i = 0; i < facets.size();) {
     std::size_t j = i + 1;
     while(j < facets.size() && facets[j].key == facets[i].key) ++j;
     if(j - i == 1 && !std::binary_search(walls.begin(), walls.end(), facets[i].key)) {
       // Listed as the finite tetrahedron lists it, as a ghost is (see
       // flat_storage_from_tetrahedra).
-      const std::array<Vertex_id, 4>& t = tets[facets[i].at / 4];
+      const std::array<Vertex_id, 4> t = r.made[facets[i].at / 4];
       const int f = static_cast<int>(facets[i].at % 4);
-      tets.push_back({t[facet_vertex[f][0]], t[facet_vertex[f][1]], t[facet_vertex[f][2]], ghost_vertex});
+      r.made.push_back({t[facet_vertex[f][0]], t[facet_vertex[f][1]], t[facet_vertex[f][2]], ghost_vertex});
     }
     i = j;
   }
-  CGAL_assertion(tets.size() >= made);
-  (void)made;
-  std::vector<Tet_id> slots(tets.size());
-  try {
-    replace_tetrahedra(m, old.data(), old.size(), tets.data(), tets.size(), slots.data(), scratch);
-  } catch(const std::logic_error& e) {
-    throw std::logic_error(std::string("Tetrahedral_mesher: a recovered component does not fit its walls: ") +
-                           e.what());
-  }
+  return r;
 }
 
 // RECOVERBOUNDARY of the region only, component by component, in place;
 // returns true, or leaves the mesh untouched and returns false when TetGen
-// fails on a component or its mesh does not fit the walls.  The rest of the
+// fails on a component or its mesh does not fit the walls (and throws
+// logic_error, the mesh untouched too, should a recovered component not
+// close up with the rest, which would be a bug).  The rest of the
 // mesh (on fandisk 97% of its tetrahedra) is not rebuilt: that took as long
 // as the region's search.
 inline bool recover_locally(const std::vector<Triangle_key>& input, const std::vector<Triangle_key>& missing,
@@ -956,6 +957,22 @@ inline bool recover_locally(const std::vector<Triangle_key>& input, const std::v
       recovered[c].push_back(tv);
     }
   }
+  // Each replacement checked in full before the first is made: one that
+  // does not close up (a bug, not a bad input) leaves the mesh as it was.
+  // The checks read each component's own tetrahedra and ghosts, which the
+  // other components' replacements do not change.
+  std::vector<Component_replacement> replacements;
+  replacements.reserve(region.number_of_components());
+  for(std::size_t c = 0; c < region.number_of_components(); ++c) {
+    replacements.push_back(component_replacement(m, region, c, std::move(recovered[c])));
+    const Component_replacement& r = replacements.back();
+    try {
+      check_replacement(m, r.old.data(), r.old.size(), r.made.data(), r.made.size());
+    } catch(const std::logic_error& e) {
+      throw std::logic_error(std::string("Tetrahedral_mesher: a recovered component does not fit its walls: ") +
+                             e.what());
+    }
+  }
   for(const auto& p : steiner_points) {
     Vertex_record record;
     std::copy(p.begin(), p.end(), record.xyz);
@@ -963,8 +980,11 @@ inline bool recover_locally(const std::vector<Triangle_key>& input, const std::v
     m.vertices.push_back(record);
   }
   Replacement_scratch scratch;
-  for(std::size_t c = 0; c < region.number_of_components(); ++c)
-    replace_component(m, region, c, std::move(recovered[c]), scratch);
+  std::vector<Tet_id> slots;
+  for(const Component_replacement& r : replacements) {
+    slots.resize(r.made.size());
+    replace_tetrahedra(m, r.old.data(), r.old.size(), r.made.data(), r.made.size(), slots.data(), scratch);
+  }
   report.used_tetgen = report.tetgen_components > 0;
   report.steiner_points = steiner_points.size();
   return true;

@@ -230,10 +230,6 @@ private:
     std::vector<std::array<Vertex_id, 4>> ball_corners;
     std::vector<std::array<Vertex_id, 4>> made;
     std::vector<Tet_id> slots;
-    // star_of_region's scratch: per vertex, the number of the last call
-    // that met it on a boundary facet.
-    std::vector<std::uint32_t> boundary_stamp;
-    std::uint32_t stamp = 0;
 
     std::size_t slots_left() const { return free_slots->size() + (fresh_end - next_fresh); }
     Tet_id new_slot()
@@ -1232,14 +1228,15 @@ private:
   // vertex star, and the cone would drop that vertex.  False then, and
   // when a facet inside the region is constrained (an input triangle would
   // go).
-  bool star_of_region(Worker& w, const Tet_id* region, std::size_t region_size, Vertex_id c) const
+  bool star_of_region(Worker& w, const Tet_id* region, std::size_t region_size, Vertex_id c)
   {
+    CGAL_precondition(w.may_add_vertices); // the stamps are not per partition
     const Flat_storage& m = cm_.mesh;
     w.made.clear();
-    if(w.boundary_stamp.size() < m.vertices.size()) w.boundary_stamp.resize(m.vertices.size(), 0);
-    if(++w.stamp == 0) {
-      std::fill(w.boundary_stamp.begin(), w.boundary_stamp.end(), 0);
-      w.stamp = 1;
+    if(boundary_stamp_.size() < m.vertices.size()) boundary_stamp_.resize(m.vertices.size(), 0);
+    if(++stamp_ == 0) {
+      std::fill(boundary_stamp_.begin(), boundary_stamp_.end(), 0);
+      stamp_ = 1;
     }
     for(std::size_t k = 0; k < region_size; ++k) {
       const Vertex_id* sv = m.vertex_ids(region[k]);
@@ -1252,13 +1249,13 @@ private:
         std::array<Vertex_id, 4> q = {sv[0], sv[1], sv[2], sv[3]};
         q[f] = c;
         w.made.push_back(q);
-        for(int i = 0; i < 3; ++i) w.boundary_stamp[sv[facet_vertex[f][i]]] = w.stamp;
+        for(int i = 0; i < 3; ++i) boundary_stamp_[sv[facet_vertex[f][i]]] = stamp_;
       }
     }
     for(std::size_t k = 0; k < region_size; ++k) {
       const Vertex_id* sv = m.vertex_ids(region[k]);
       for(int i = 0; i < 4; ++i)
-        if(w.boundary_stamp[sv[i]] != w.stamp) return false;
+        if(boundary_stamp_[sv[i]] != stamp_) return false;
     }
     return true;
   }
@@ -1433,6 +1430,10 @@ private:
   std::vector<Tet_id> incident_;
   std::vector<std::uint8_t> partition_of_vertex_;
   std::vector<Tet_id> need_steiner_; // gathered from the partitions' workers
+  // star_of_region's scratch (the sequential step's only): per vertex, the
+  // number of the last call that met it on a boundary facet.
+  std::vector<std::uint32_t> boundary_stamp_;
+  std::uint32_t stamp_ = 0;
   double dihedral_scale_ = 0; // quality_threshold / sin(min_dihedral_target); 0: gamma alone
   bool steiner_phase_ = false;
   bool every_bad_tetrahedron_ = true; // the pass works on inactive ones too
