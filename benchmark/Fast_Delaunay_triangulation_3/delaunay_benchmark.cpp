@@ -119,7 +119,6 @@ struct Attempt_report
 {
   std::uint64_t points = 0, inserted = 0, mesh_vertices = 0;
   int partitions = 0;
-  int papers_rule_partitions = 0; // partitions that went on owning by three of four vertices
   double seconds = 0;
 };
 constexpr int max_attempt_rows = 48;
@@ -380,7 +379,6 @@ Engine_result run_fast_parallel_with_attempts(const Points& points, int threads)
     a.inserted = round.inserted;
     a.mesh_vertices = round.mesh_vertices;
     a.partitions = round.partitions;
-    a.papers_rule_partitions = round.papers_rule_partitions;
     a.seconds = round.seconds;
   }
   return result;
@@ -1016,19 +1014,17 @@ void print_phases(const Row& row)
 // The paper's Table 2 for one fast-par+log run.
 void print_attempts(const Row& row)
 {
-  std::printf("\nfast-par attempts with %d partitions (paper Table 2; 1 partition = sequential finish;\n"
-              "3 of 4: partitions that went on owning the tetrahedra with 3 of their 4 vertices in them, not 4)\n",
+  std::printf("\nfast-par attempts with %d partitions (paper Table 2; 1 partition = sequential finish)\n",
               row.threads);
-  std::printf("%8s %12s %12s %8s %11s %8s %14s %9s\n", "attempt", "points", "inserted", "ratio", "partitions",
-              "3 of 4", "mesh vertices", "seconds");
+  std::printf("%8s %12s %12s %8s %11s %14s %9s\n", "attempt", "points", "inserted", "ratio", "partitions",
+              "mesh vertices", "seconds");
   std::uint64_t total = 0;
   std::vector<std::uint64_t> by_partitions(256, 0);
   for(std::size_t i = 0; i < row.attempts.size(); ++i) {
     const Attempt_report& a = row.attempts[i];
-    std::printf("%8zu %12s %12s %7.1f%% %11d %8s %14s %9.3f\n", i + 1, with_commas(a.points).c_str(),
+    std::printf("%8zu %12s %12s %7.1f%% %11d %14s %9.3f\n", i + 1, with_commas(a.points).c_str(),
                 with_commas(a.inserted).c_str(), a.points ? 100.0 * double(a.inserted) / double(a.points) : 0.0,
-                a.partitions, a.partitions == 1 ? "-" : std::to_string(a.papers_rule_partitions).c_str(),
-                with_commas(a.mesh_vertices).c_str(), a.seconds);
+                a.partitions, with_commas(a.mesh_vertices).c_str(), a.seconds);
     total += a.inserted;
     by_partitions[static_cast<std::size_t>(std::min(a.partitions, 255))] += a.inserted;
   }

@@ -72,21 +72,25 @@ INSTANTIATE_TEST_SUITE_P(Distributions, Parallel_agreement, ::testing::ValuesIn(
 
 using fdt3_test::cells_in_slot_order;
 
-// Points near a sphere: in some rounds the strict ownership rule fails on
-// more than a quarter of a partition's points, which then goes on under the
-// paper's rule while the others may still run under the strict one; the
-// cells stay CGAL's.
-TEST(Parallel_insertion, PapersOwnershipRuleOnPointsNearASurface)
+// Points near a sphere: most cells join the two sides of the sphere, and a
+// partition's walks meet the other partition's cells on the way to points
+// that lie in its own.  They go around those cells, so the partitions insert
+// most of the points: 77% of these (the first BRIO rounds are sequential),
+// against 55% without the detours, under the 2/3 checked here; the cells
+// stay CGAL's.
+TEST(Parallel_insertion, WalksGoAroundForeignCellsNearASurface)
 {
-  const std::vector<Point> points = to_points<Point>(shell_points(points_per_case, 0.01, 3));
+  const std::vector<Point> points = to_points<Point>(shell_points(points_per_case, 1e-3, 3));
   for(int threads : {2, 4}) {
     Fast_dt fast;
     fast.set_number_of_threads(threads);
     fast.insert(points.begin(), points.end());
-    int switched = 0;
-    for(const auto& r : fast.last_insertion_report().rounds) switched += r.papers_rule_partitions;
+    std::size_t by_partitions = 0;
+    for(const auto& r : fast.last_insertion_report().rounds)
+      if(r.partitions > 1) by_partitions += r.inserted;
     if(threads == 2) {
-      EXPECT_GT(switched, 0) << "no partition took the paper's rule";
+      EXPECT_GT(3 * by_partitions, 2 * points.size()) << by_partitions << " of " << points.size()
+                                                       << " points inserted by the partitions";
     }
     ASSERT_TRUE(fast.is_valid());
     const Cgal_dt cgal(points.begin(), points.end());

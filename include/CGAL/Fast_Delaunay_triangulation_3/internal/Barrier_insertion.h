@@ -16,10 +16,8 @@
 //             too fills its cavity; the others search the same point again
 //             in the next iteration.
 // So conflicts are decided by the cavities themselves, not by which region
-// a tetrahedron's vertices lie in, and no walk ever fails: on points
-// sampled from a surface, 93% of the partitioned engine's failures are
-// walks that meet a tetrahedron of another partition.  Outside tetrahedra
-// are claimed too because a ball rewrites their neighbour codes.
+// a tetrahedron's vertices lie in, and no walk ever fails.  Outside
+// tetrahedra are claimed too because a ball rewrites their neighbour codes.
 //
 // A claim word holds (iteration, 255 - run, in conflict) and grows by an
 // atomic maximum, so every word ends holding its highest-priority claimer
@@ -39,9 +37,10 @@
 // Per point this engine costs about 1.2 times the sequential kernel (the
 // claim words are one more cache line per tested tetrahedron; the vertex
 // numbering of the ball cannot use the shared vertex scratch words), and
-// its threads wait for each other at every barrier.  On 2 cores it ties with the partitioned engine on points sampled from a surface
-// and is slower on the other inputs measured, so the partitioned engine
-// stays the default (the manual's Parallel Insertion section has the table).
+// its threads wait for each other at every barrier.  On 2 cores it is slower
+// than the partitioned engine on every input measured, so the partitioned
+// engine stays the default (the manual's Parallel Insertion section has the
+// table).
 //
 // An exception in one thread (an assertion, std::bad_alloc) stops the others
 // at their next barrier and is thrown again by insert(); the triangulation

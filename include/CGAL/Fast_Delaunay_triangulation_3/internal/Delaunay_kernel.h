@@ -112,11 +112,6 @@ struct Insertion_scratch
   Raw_array<Facet_code> boundary_inner;  // the same facets seen from the cavity, while searching
   Raw_array<Tet_id> ball;              // slots of the new tetrahedra
   Raw_array<Vertex_id> boundary_vertices;  // numbered cavity boundary vertices, in order
-  // Where Partition_ownership_three_of_four's kernel writes the marks of a
-  // tetrahedron it does not own (never read).
-  Vertex_id unused_marks[2] = {0, 0};
-  // Those of another partition, with their numbers (Partition_ownership_three_of_four).
-  std::vector<std::pair<Vertex_id, std::uint8_t>> foreign_boundary_vertices;
   struct Half_edge { std::uint64_t key; Facet_code facet; };
   std::vector<Half_edge> large_edges;     // hash table of the large cavities' edges
   Facet_code edge_table[table_size * table_size];
@@ -360,12 +355,10 @@ inline void cone_over_triangles(Flat_storage& mesh, Vertex_id apex)
 }
 
 // Which tetrahedra a kernel may walk through, delete and refill (paper §3.2).
-// Sequentially, all of them.  `shares_neighbors`: whether a tetrahedron next
-// to a cavity may at the same time be next to another kernel's cavity.
+// Sequentially, all of them.
 struct Sequential_ownership
 {
   static constexpr bool partitioned = false;
-  static constexpr bool shares_neighbors = false;
   bool owns(const Flat_storage&, Tet_id) const { return true; }
   bool owns_across(const Vertex_id*, int) const { return true; }
 };
@@ -374,13 +367,15 @@ struct Sequential_ownership
 // finite vertices are in the thread's partition; the others (foreign or in
 // the buffer zone) are never modified, so threads never touch the same
 // tetrahedron: an outside neighbour of a cavity shares a facet of three owned
-// vertices with it, hence cannot have three vertices of another partition.
-// The mesher's refinement uses this rule: its cavities also write the
-// subdomain and constraint entries of the tetrahedra around them.
+// vertices with it, hence cannot have three vertices of another partition,
+// and nothing is written atomically.  The paper's rule (at most one vertex
+// outside the partition) fails fewer walks near a surface, whose long
+// tetrahedra join the two sides, but lets two cavities share an outside
+// neighbour; the walk's detours (Delaunay_kernel::nearest_owned_around) do
+// that job here instead (the manual has the measurements).
 struct Partition_ownership
 {
   static constexpr bool partitioned = true;
-  static constexpr bool shares_neighbors = false;
   const std::uint8_t* partition_of_vertex = nullptr;
   std::uint8_t partition = 0;
 
@@ -400,57 +395,6 @@ struct Partition_ownership
   {
     const Vertex_id w = tv[i] == ghost_vertex ? tv[0] : tv[i];
     return partition_of_vertex[w] == partition;
-  }
-};
-
-// The paper's rule, for Delaunay insertion: a tetrahedron belongs to a thread
-// when at most one of its four vertices is not in the thread's partition
-// (the ghost counts as not in it).  Two threads never own the same
-// tetrahedron, and a neighbour of an owned one (it shares two owned
-// vertices) is never another thread's.  On points sampled from a surface
-// this is what lets partitions work at all: a tetrahedron inside the
-// surface joins a surface triangle to a vertex anywhere across the volume,
-// so requiring all four vertices fails about every other insertion.
-// The price: a tetrahedron with two vertices of each of two partitions may
-// be just outside a cavity of each at once.  The kernel then leaves it
-// unmarked (it is tested again if met again), both threads write only their
-// own facet's neighbour code there (atomically, each word by one writer),
-// and a cavity's boundary vertex of another partition is numbered in the
-// thread's scratch, not in the vertex's shared scratch word.
-struct Partition_ownership_three_of_four
-{
-  static constexpr bool partitioned = true;
-  static constexpr bool shares_neighbors = true;
-  const std::uint8_t* partition_of_vertex = nullptr;
-  std::uint8_t partition = 0;
-
-  bool owns_vertex(Vertex_id v) const { return partition_of_vertex[v] == partition; }
-  // The ghost counts as outside every partition.
-  bool owns_any_vertex(Vertex_id v) const
-  {
-    const bool finite = v != ghost_vertex;
-    return finite & (partition_of_vertex[finite ? v : 0] == partition);
-  }
-  // Bit i: whether tv[i] is in the partition (marks ignored).
-  unsigned owned_vertex_bits(const Vertex_id* tv) const
-  {
-    unsigned bits = 0;
-    for(int i = 0; i < 4; ++i) bits |= unsigned(owns_any_vertex(tv[i] & ~mark_bit)) << i;
-    return bits;
-  }
-  bool owns(const Flat_storage& m, Tet_id t) const { return __builtin_popcount(owned_vertex_bits(m.vertex_ids(t))) >= 3; }
-  // Bit f: whether the facet opposite vertex f of an owned tetrahedron has its
-  // three vertices in the partition.  A neighbour across such a facet is
-  // owned whatever its fourth vertex; across the others, when its fourth
-  // vertex is in the partition (one lookup per neighbour, as with
-  // Partition_ownership).
-  static unsigned owned_facet_bits(unsigned owned_vertices)
-  {
-    return owned_vertices == 15u ? 15u : (~owned_vertices & 15u);
-  }
-  bool owns_across(const Vertex_id* tv, int i, unsigned owned_facets_of_entered_from, int crossed) const
-  {
-    return ((owned_facets_of_entered_from >> crossed) & 1u) | owns_any_vertex(tv[i]);
   }
 };
 
@@ -513,6 +457,7 @@ public:
   // return it is a tetrahedron near v, or, when the caller passes the point
   // it inserts next, the new tetrahedron nearest to that point.  A point
   // equal to an existing vertex is not inserted: `duplicate_of` receives that vertex.
+  // Partitioned and aborted: `hint` is where a blocked walk stopped, else unchanged.
   Insertion_result insert(Vertex_id v, Tet_id& hint, Vertex_id& duplicate_of, const double* next = nullptr)
   {
     const double* p = m_.point(v);
@@ -521,6 +466,10 @@ public:
     const Tet_id start = walk(hint, p);
     if(s_.timed) t1 = Clock::now();
     if(Ownership::partitioned && start == no_tet) {
+      // The next point, near this one along the curve, starts where this
+      // walk stopped: from the last ball it would meet the same foreign
+      // tetrahedra, and so would the points after it.
+      if(blocked_at_ != no_tet) hint = blocked_at_;
       ++s_.stats.aborted;
       return Insertion_result::aborted;
     }
@@ -561,15 +510,20 @@ public:
   // WALK: a tetrahedron whose closure contains p, or a ghost tetrahedron whose
   // hull facet sees p strictly.  Visibility walk with a random first facet
   // per step, which cannot cycle forever (Devillers, Pion, Teillaud 2002).
-  // Partitioned: no_tet as soon as the walk would enter a tetrahedron the
-  // kernel does not own (the ghost start's real neighbour included); with
-  // Walk_giving_up also no_tet past its step limit.
+  // Partitioned: the walk enters only tetrahedra the kernel owns; where
+  // every facet p lies beyond leads to another one, it goes around them
+  // (nearest_owned_around) at most max_walk_detours times, then gives no_tet
+  // and keeps where it stopped in blocked_at_.  no_tet too when the start is
+  // not owned (the ghost start's real neighbour included) and, with
+  // Walk_giving_up, past the step limit.
   Tet_id walk(Tet_id t, const double* p)
   {
+    blocked_at_ = no_tet;
     if(m_.is_ghost(t)) t = m_.neighbor(t, 3);
     if(!ownership_.owns(m_, t)) return no_tet;
     Tet_id previous = Tet_id(-1);
     std::uint64_t steps = 0;
+    int detours = 0;
     const std::uint64_t step_limit = Walk::gives_up ? Walk::step_limit : 64 + 8 * m_.number_of_slots();
     for(;;) {
       if(m_.is_ghost(t)) break;
@@ -587,17 +541,11 @@ public:
       // Partitioned: a facet p lies beyond may lead to a tetrahedron the
       // kernel does not own; the walk then takes another such facet if one
       // leads to an owned one (any choice among the facets p lies beyond
-      // terminates in a Delaunay triangulation), and fails only if none does.
+      // terminates in a Delaunay triangulation), and goes around the foreign
+      // tetrahedra (nearest_owned_around) only if none does.
       bool blocked = false;
-      unsigned owned_facets = 0; // Partition_ownership_three_of_four's bits of t
-      if constexpr(Ownership::shares_neighbors)
-        owned_facets = Ownership::owned_facet_bits(ownership_.owned_vertex_bits(tv));
-      auto step_to = [&](Tet_id u, Facet_code code, int f) __attribute__((always_inline)) {
-        bool owned;
-        if constexpr(Ownership::shares_neighbors)
-          owned = ownership_.owns_across(m_.vertex_ids(u), facet_of(code), owned_facets, f);
-        else
-          owned = ownership_.owns_across(m_.vertex_ids(u), facet_of(code));
+      auto step_to = [&](Tet_id u, Facet_code code) __attribute__((always_inline)) {
+        const bool owned = ownership_.owns_across(m_.vertex_ids(u), facet_of(code));
         if(owned) next = u;
         else blocked = true;
         return owned;
@@ -609,17 +557,30 @@ public:
         if(u == previous) continue;
         if constexpr(Paths::avx2) {
           if(beyond & (1 << f)) {
-            if(step_to(u, code, f)) break;
+            if(step_to(u, code)) break;
             continue;
           }
           if(before & (1 << f)) continue;
         }
         const double* q[4] = {w[0], w[1], w[2], w[3]};
         q[f] = p;
-        if(orientation(filter_, q[0], q[1], q[2], q[3]) < 0 && step_to(u, code, f)) break;
+        if(orientation(filter_, q[0], q[1], q[2], q[3]) < 0 && step_to(u, code)) break;
       }
       if(next == Tet_id(-1)) {
-        if(Ownership::partitioned && blocked) return no_tet;
+        if constexpr(Ownership::partitioned) {
+          if(blocked) {
+            const Tet_id around = detours < max_walk_detours ? nearest_owned_around(t, p) : t;
+            if(around == t) {
+              blocked_at_ = t;
+              s_.stats.walk_steps += steps;
+              return no_tet;
+            }
+            ++detours;
+            previous = Tet_id(-1);
+            t = around;
+            continue;
+          }
+        }
         break;
       }
       previous = t;
@@ -628,6 +589,49 @@ public:
     }
     s_.stats.walk_steps += steps;
     return t;
+  }
+
+  // A partitioned walk blocked by foreign tetrahedra between it and p may
+  // still end in an owned one: on points near a surface the straight path
+  // often dips into a long tetrahedron joining the two sides, while p lies
+  // in a tetrahedron of the partition.  The walk then goes on from the owned
+  // tetrahedron whose centroid is nearest p, among the first `detour_reach`
+  // ones found breadth first from t through owned tetrahedra; t itself when
+  // none is nearer.
+  static constexpr int max_walk_detours = 4;
+  static constexpr int detour_reach = 32;
+  Tet_id nearest_owned_around(Tet_id t, const double* p) const
+  {
+    auto squared_distance_to_centroid = [&](Tet_id u) {
+      const Vertex_id* uv = m_.vertex_ids(u);
+      double d = 0;
+      for(int a = 0; a < 3; ++a) {
+        const double c = 0.25 * (m_.point(uv[0])[a] + m_.point(uv[1])[a] + m_.point(uv[2])[a] + m_.point(uv[3])[a]);
+        d += (c - p[a]) * (c - p[a]);
+      }
+      return d;
+    };
+    Tet_id reached[detour_reach];
+    int n = 1;
+    reached[0] = t;
+    Tet_id nearest = t;
+    double nearest_distance = squared_distance_to_centroid(t);
+    for(int k = 0; k < n && n < detour_reach; ++k) {
+      for(int f = 0; f < 4 && n < detour_reach; ++f) {
+        const Facet_code code = m_.neighbor_code(reached[k], f);
+        const Tet_id u = tet_of(code);
+        if(m_.is_ghost(u) || std::find(reached, reached + n, u) != reached + n ||
+           !ownership_.owns_across(m_.vertex_ids(u), facet_of(code)))
+          continue;
+        reached[n++] = u;
+        const double d = squared_distance_to_centroid(u);
+        if(d < nearest_distance) {
+          nearest_distance = d;
+          nearest = u;
+        }
+      }
+    }
+    return nearest;
   }
 
   // Conflict test of a live tetrahedron with p (perturbed, never a tie).
@@ -671,7 +675,6 @@ public:
   // when a partition's slot supply cannot provide the extra tetrahedra.
   bool fill_hole(Vertex_id v, const Tet_id* cells, std::size_t n)
   {
-    static_assert(!Ownership::shares_neighbors, "a hole of its own is filled under Partition_ownership");
     s_.cavity.resize(n);
     std::copy(cells, cells + n, s_.cavity.begin());
     s_.boundary_inner.clear();
@@ -735,8 +738,7 @@ private:
     // as the next queue entry and as the next boundary candidate, and only
     // the counts move with it.  Boundary records, whose vertex numbering
     // branches, are built after the search (complete_boundary).
-    // owned_facets: Partition_ownership_three_of_four's bits for t.
-    auto visit = [&](Tet_id t, int f, unsigned owned_facets) __attribute__((always_inline)) {
+    auto visit = [&](Tet_id t, int f) __attribute__((always_inline)) {
       const Facet_code code = m_.neighbor_code(t, f);
       const Tet_id u = tet_of(code);
       Vertex_id* uv = m_.tets[u].v;
@@ -747,24 +749,15 @@ private:
         ++s_.stats.conflict_tests;
         // Partitioned: ownership is read whatever the outcome, so that the
         // only branch is on the rare foreign conflict, not on the coin toss.
-        bool owned;
-        if constexpr(Ownership::shares_neighbors) {
-          owned = ownership_.owns_across(uv, facet_of(code), owned_facets, f);
-        } else {
-          owned = ownership_.owns_across(uv, facet_of(code));
-        }
+        const bool owned = ownership_.owns_across(uv, facet_of(code));
         conflict = in_conflict(u, p);
         if(Ownership::partitioned && (conflict & !owned)) {
           complete = false;
           return;
         }
         cavity_ghosts_ += conflict & (uv[3] == ghost_vertex);
-        // A tetrahedron another kernel may meet too is never written, not
-        // even with an unchanged mark: the marks go to a scratch word then.
-        Vertex_id* marks = uv;
-        if constexpr(Ownership::shares_neighbors) marks = owned ? uv : s_.unused_marks;
-        marks[0] |= static_cast<Vertex_id>(conflict) << 31;
-        marks[1] |= static_cast<Vertex_id>(!conflict) << 31;
+        uv[0] |= static_cast<Vertex_id>(conflict) << 31;
+        uv[1] |= static_cast<Vertex_id>(!conflict) << 31;
       }
       prefetch_neighbors(u);
       // Queued as the facet through which it was entered, which the search
@@ -778,7 +771,7 @@ private:
     cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
     m_.mark_free(start);
     queue[queued++] = start;
-    for(int f = 0; f < 4 && complete; ++f) visit(start, f, owned_facet_bits(start));
+    for(int f = 0; f < 4 && complete; ++f) visit(start, f);
     for(std::size_t k = 1; k < queued && complete; ++k) {
       if(queued + 3 > cavity.size()) {
         cavity.resize(2 * cavity.size());
@@ -791,10 +784,9 @@ private:
       const Facet_code entered = static_cast<Facet_code>(queue[k]);
       const Tet_id t = tet_of(entered);
       const int back = facet_of(entered);
-      const unsigned owned_facets = owned_facet_bits(t);
-      visit(t, (back + 1) & 3, owned_facets);
-      visit(t, (back + 2) & 3, owned_facets);
-      visit(t, (back + 3) & 3, owned_facets);
+      visit(t, (back + 1) & 3);
+      visit(t, (back + 2) & 3);
+      visit(t, (back + 3) & 3);
     }
     for(std::size_t k = 1; k < queued; ++k) queue[k] = tet_of(static_cast<Facet_code>(queue[k]));
     cavity.resize(queued);
@@ -821,11 +813,10 @@ private:
     s_.boundary_vertices.resize(found + 4);
     numbered_ = s_.boundary_vertices.data();
     numbered_count_ = 0;
-    s_.foreign_boundary_vertices.clear();
     for(std::size_t k = 0; k < found; ++k) {
       const Facet_code code = s_.boundary_inner[k];
       const Facet_code outside = m_.neighbor_code(code);
-      unmark_outside(tet_of(outside));
+      m_.unmark_outside(tet_of(outside));
       write_boundary_facet(facets[k], tet_of(code), facet_of(code), outside);
     }
     s_.boundary_vertices.resize(numbered_count_);
@@ -837,7 +828,7 @@ private:
   void prefetch_neighbors(Tet_id t) const
   {
     const Facet_code* n = m_.tets[t].n;
-    for(int f = 0; f < 4; ++f) __builtin_prefetch(&m_.tets[tet_of(load_neighbor_code(n + f))]);
+    for(int f = 0; f < 4; ++f) __builtin_prefetch(&m_.tets[tet_of(n[f])]);
   }
 
   // Puts back what an interrupted search changed: the cavity and outside
@@ -845,23 +836,7 @@ private:
   void undo_search()
   {
     for(Tet_id t : s_.cavity) m_.unmark_free(t);
-    for(Facet_code code : s_.boundary_inner) unmark_outside(tet_of(m_.neighbor_code(code)));
-  }
-
-  // Partition_ownership_three_of_four's facet bits of the owned tetrahedron t.
-  unsigned owned_facet_bits(Tet_id t) const
-  {
-    if constexpr(Ownership::shares_neighbors)
-      return Ownership::owned_facet_bits(ownership_.owned_vertex_bits(m_.vertex_ids(t)));
-    (void)t;
-    return 0;
-  }
-
-  // Without writing to a tetrahedron that was not marked: it may be another
-  // kernel's neighbour too (Partition_ownership_three_of_four).
-  void unmark_outside(Tet_id t)
-  {
-    if(!Ownership::shares_neighbors || m_.is_marked_outside(t)) m_.unmark_outside(t);
+    for(Facet_code code : s_.boundary_inner) m_.unmark_outside(tet_of(m_.neighbor_code(code)));
   }
 
   // Puts back what a complete CAVITY changed: cavity marks and boundary
@@ -914,7 +889,7 @@ private:
       return false;
     }
     take_ball_slots(facets);
-    if(s_.boundary_vertices.size() + s_.foreign_boundary_vertices.size() < Insertion_scratch::table_size) {
+    if(s_.boundary_vertices.size() < Insertion_scratch::table_size) {
       glue_with_table(p);
       ++s_.stats.small_cavities;
     } else {
@@ -945,24 +920,9 @@ private:
     Tet_record& r = m_.tets[t];
     r.v[0] = p; r.v[1] = b.v[0]; r.v[2] = b.v[1]; r.v[3] = b.v[2];
     r.n[0] = b.outside;
-    store_neighbor_code(&m_.neighbor_code(b.outside), facet_code(t, 0));
+    m_.neighbor_code(b.outside) = facet_code(t, 0);
     if(b.v[2] == ghost_vertex) ++s_.ghost_delta;
     if(m_.with_sub_determinants) update_sub_determinants(m_, t);
-  }
-
-  // The neighbour codes of a tetrahedron outside a cavity: with
-  // Partition_ownership_three_of_four another kernel may write another of
-  // them at the same time (each code has one writer).  Relaxed atomics are
-  // plain moves on x86-64 and say so to the compiler and ThreadSanitizer.
-  static Facet_code load_neighbor_code(const Facet_code* code)
-  {
-    if constexpr(Ownership::shares_neighbors) return __atomic_load_n(code, __ATOMIC_RELAXED);
-    return *code;
-  }
-  static void store_neighbor_code(Facet_code* code, Facet_code value)
-  {
-    if constexpr(Ownership::shares_neighbors) __atomic_store_n(code, value, __ATOMIC_RELAXED);
-    else *code = value;
   }
 
   // Local numbers 1..31 of the cavity boundary vertices, for the adjacency
@@ -977,37 +937,15 @@ private:
   std::uint8_t number_vertex(Vertex_id v)
   {
     if(v == ghost_vertex) return 0;
-    if constexpr(Ownership::shares_neighbors) {
-      if(!ownership_.owns_vertex(v)) return number_foreign_vertex(v);
-    }
     std::uint64_t& tag = m_.vertices[v].scratch;
     const std::uint64_t old = tag;
     const bool fresh = old == 0;
     numbered_[numbered_count_] = v;
     numbered_count_ += fresh;
     const std::uint64_t number =
-        fresh ? std::min<std::uint64_t>(numbers_given(), Insertion_scratch::table_size - 1) : old;
+        fresh ? std::min<std::uint64_t>(numbered_count_, Insertion_scratch::table_size - 1) : old;
     tag = number;
     return static_cast<std::uint8_t>(number);
-  }
-
-  // A boundary vertex of another partition (a few per cavity at most), whose
-  // scratch word that partition's kernel may be using: numbered here.
-  __attribute__((noinline)) std::uint8_t number_foreign_vertex(Vertex_id v)
-  {
-    for(const auto& numbered : s_.foreign_boundary_vertices)
-      if(numbered.first == v) return numbered.second;
-    s_.foreign_boundary_vertices.emplace_back(v, std::uint8_t(0));
-    const std::uint8_t number =
-        static_cast<std::uint8_t>(std::min<std::size_t>(numbers_given(), Insertion_scratch::table_size - 1));
-    s_.foreign_boundary_vertices.back().second = number;
-    return number;
-  }
-
-  // How many boundary vertices have a number so far.
-  std::size_t numbers_given() const
-  {
-    return numbered_count_ + (Ownership::shares_neighbors ? s_.foreign_boundary_vertices.size() : 0);
   }
 
   // Every table entry read in the second pass was written in the first: the
@@ -1053,6 +991,7 @@ private:
   std::size_t cavity_ghosts_ = 0;
   Vertex_id* numbered_ = nullptr; // boundary_vertices while complete_boundary() fills it
   std::size_t numbered_count_ = 0;
+  Tet_id blocked_at_ = no_tet; // owned, where the last walk stopped blocked; else no_tet
 };
 
 // Does nothing: insert_in_order without progress reports.

@@ -289,7 +289,6 @@ struct Flat_storage
   // Marks of the kernel (see the top of this file).
   void mark_free(Tet_id t) { tets[t].v[0] |= mark_bit; }
   void unmark_free(Tet_id t) { tets[t].v[0] &= ~mark_bit; }
-  bool is_marked_outside(Tet_id t) const { return (tets[t].v[1] & mark_bit) != 0; }
   void mark_outside(Tet_id t) { tets[t].v[1] |= mark_bit; }
   void unmark_outside(Tet_id t) { tets[t].v[1] &= ~mark_bit; }
 

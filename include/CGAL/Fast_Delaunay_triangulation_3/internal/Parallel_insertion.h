@@ -7,16 +7,15 @@
 // along the Moore curve; every vertex of the mesh belongs to the partition
 // whose key range holds its own Moore key.  Each partition is inserted by one
 // task with the ordinary kernel, restricted to the tetrahedra it owns: those
-// with all their vertices in its partition (Partition_ownership), or, for
-// Delaunay insertion in a partition where that fails too often, those with
-// at most one vertex outside it (the paper's rule,
-// Partition_ownership_three_of_four; see strict_rule_window).  An insertion
-// whose walk or cavity reaches another tetrahedron is aborted and kept for
-// the next attempt.  Later attempts change the partitions with a new coordinate
-// transform of the curve's grid and a circular shift of the curve (§3.3); the
-// number of partitions halves when fewer than 1/5 of the attempts succeed or
-// fewer than `min_points_per_partition` points per partition remain, down to
-// a sequential finish (§3.4).  The first BRIO round is always sequential.
+// with all their vertices in its partition (Partition_ownership, stricter than
+// the paper's rule; its walks go around the tetrahedra they may not enter).
+// An insertion whose walk or cavity cannot avoid another tetrahedron is
+// aborted and kept for the next attempt.  Later attempts change the
+// partitions with a new coordinate transform of the curve's grid and a
+// circular shift of the curve (§3.3); the number of partitions halves when
+// fewer than 1/5 of the attempts succeed or fewer than
+// `min_points_per_partition` points per partition remain, down to a
+// sequential finish (§3.4).  The first BRIO round is always sequential.
 // Vertices that BRIO sorted on the engine's grid get their partition from
 // that order (a few binary searches per attempt on the plain curve and its
 // shifts) rather than from one Moore key each per attempt.
@@ -60,7 +59,6 @@ struct Partition_round
   std::size_t inserted = 0;        // inserted (duplicates included)
   int partitions = 1;              // 1: sequential
   std::size_t mesh_vertices = 0;   // vertices in the mesh before the attempt
-  int papers_rule_partitions = 0;  // partitions that went on under the paper's ownership rule
   // Barrier engine (Barrier_insertion.h; `partitions` holds its runs):
   // cavities searched again in a later iteration because a run of smaller
   // index claimed one of their tetrahedra.
@@ -109,8 +107,6 @@ struct Partition_slots
 
 // The per-point step of Partitioned_insertion, here the Delaunay kernel's.
 // A policy provides
-//   shares_neighbors_allowed   whether its kernels may run under
-//                              Partition_ownership_three_of_four;
 //   Kernel<Ownership, Slots, Paths>
 //                              the kernel a partition (or the sequential
 //                              finish) runs, with the predicates' forms
@@ -125,7 +121,6 @@ struct Partition_slots
 //                              follows v in its run (or null).
 struct Delaunay_point_insertion
 {
-  static constexpr bool shares_neighbors_allowed = true;
   template <class Ownership, class Slots, class Paths = Default_paths>
   using Kernel = Delaunay_kernel<Ownership, Slots, Walk_to_the_end, Paths>;
 
@@ -151,16 +146,6 @@ public:
   // any other conflict.  The slots a partition leaves unused are marked free,
   // which touches their pages: a larger margin costs resident memory.
   static constexpr std::size_t fresh_slots_per_point = 7;
-  // A partition starts under the strict ownership rule (Partition_ownership),
-  // whose kernel is the faster per point (by about 20% on 2 threads and
-  // uniform points, where the strict rule fails 5% of a big round); when
-  // more than a quarter of its points so far have failed, checked every
-  // `strict_rule_window` points from the fourth window on, it goes on under
-  // the paper's rule (Partition_ownership_three_of_four) to the end of the
-  // attempt: on points near a sphere the strict rule fails 52% of the big
-  // round, the paper's 18%.  (A partition's failures gather where its run
-  // starts and ends, along the cuts: a single window says little.)
-  static constexpr std::size_t strict_rule_window = 1024;
 
   Partitioned_insertion(Flat_storage& mesh, const Static_filter& filter,
                         const Sub_determinant_filter& sub_filter, const double box_lo[3],
@@ -217,7 +202,6 @@ public:
         std::vector<Vertex_id> failed;
         insert_partitioned(points, partitions, attempt++, rotated, first_new, duplicate_of, failed, stats, policy);
         row.inserted = points.size() - failed.size();
-        row.papers_rule_partitions = papers_rule_partitions_;
         points.swap(failed);
         if(5 * row.inserted < row.points) partitions /= 2;
       }
@@ -257,21 +241,13 @@ private:
   // the kernel could not take go to `failures`.  Each insertion also sees
   // the next point, which the Delaunay kernel's hint aims at.
   // With `report`, it follows the points done every progress_step points
-  // (the loop is cut into chunks: nothing more per point), counting
-  // `done_before` points done before `begin`.  With `window` > 0 the loop
-  // stops once more than a quarter of the points so far failed, checked
-  // every `window` points from the fourth on, and returns where it stopped
-  // (else `end`).
+  // (the loop is cut into chunks: nothing more per point).
   template <class Policy, class Kernel>
-  const Vertex_id* insert_run(Policy& policy, Kernel& kernel, int partition, const Vertex_id* begin,
-                              const Vertex_id* end, Vertex_id first_new, std::vector<Vertex_id>& duplicate_of,
-                              Tet_id& hint, std::vector<Vertex_id>& failures,
-                              const std::function<void(std::size_t)>* report = nullptr, std::size_t window = 0,
-                              std::size_t done_before = 0) const
+  void insert_run(Policy& policy, Kernel& kernel, int partition, const Vertex_id* begin, const Vertex_id* end,
+                  Vertex_id first_new, std::vector<Vertex_id>& duplicate_of, Tet_id& hint,
+                  std::vector<Vertex_id>& failures, const std::function<void(std::size_t)>* report = nullptr) const
   {
-    const std::size_t failures_before = failures.size();
-    std::size_t chunk = report ? progress_step : std::size_t(end - begin);
-    if(window > 0) chunk = std::min(chunk, window);
+    const std::size_t chunk = report ? progress_step : std::size_t(end - begin);
     for(const Vertex_id* chunk_begin = begin; chunk_begin != end;) {
       const Vertex_id* chunk_end = chunk_begin + std::min<std::size_t>(chunk, std::size_t(end - chunk_begin));
       for(const Vertex_id* v = chunk_begin; v != chunk_end; ++v) {
@@ -283,11 +259,9 @@ private:
         else if(r == Insertion_result::aborted) failures.push_back(*v);
       }
       const std::size_t done = std::size_t(chunk_end - begin);
-      if(report && ((done + done_before) % progress_step == 0 || chunk_end == end)) (*report)(done + done_before);
-      if(window > 0 && done >= 4 * window && 4 * (failures.size() - failures_before) > done) return chunk_end;
+      if(report) (*report)(done);
       chunk_begin = chunk_end;
     }
-    return end;
   }
 
   template <class Policy>
@@ -635,17 +609,7 @@ private:
       progress_(before + (share == 0 ? 0 : done * points.size() / share));
     };
 
-    // Each partition starts under the strict rule and may go on under the
-    // paper's (see strict_rule_window).  Either kernel writes only what the
-    // paper's rule gives its partition, so partitions under different rules
-    // never touch the same data.
-    const std::vector<Tet_id> hints =
-        owned_start_tets<Partition_ownership>(partitions, fresh_begin[0]);
-    std::vector<Tet_id> papers_hints;
-    constexpr bool may_share = Policy::shares_neighbors_allowed;
-    if(may_share && std::count(hints.begin(), hints.end(), no_tet) > 0)
-      papers_hints = owned_start_tets<Partition_ownership_three_of_four>(partitions, fresh_begin[0]);
-    std::vector<char> on_papers_rule(partitions, 0);
+    const std::vector<Tet_id> hints = owned_start_tets(partitions, fresh_begin[0]);
     for_each_chunk(partitions, [&](int j) {
       Insertion_scratch& scratch = scratches[j];
       scratch.timed = timed_;
@@ -660,25 +624,10 @@ private:
             m_, scratch, Partition_slots{&free_lists[j], fresh_begin[j], fresh_begin[j + 1], &m_.tets}, filter_,
             sub_filter_, ownership);
         Tet_id hint = hints[j];
-        const Vertex_id* stop = insert_run(policy, kernel, j, begin, end, first_new, duplicate_of, hint, failures[j],
-                                           progress, may_share ? strict_rule_window : 0);
+        insert_run(policy, kernel, j, begin, end, first_new, duplicate_of, hint, failures[j], progress);
         next_fresh[j] = kernel.slots().next_fresh;
-        if constexpr(may_share) {
-          if(stop == end) return;
-          on_papers_rule[j] = 1;
-          Partition_ownership_three_of_four papers;
-          papers.partition_of_vertex = partition_of_vertex_.data();
-          papers.partition = static_cast<std::uint8_t>(j);
-          typename Policy::template Kernel<Partition_ownership_three_of_four, Partition_slots, Paths> papers_kernel(
-              m_, scratch, kernel.slots(), filter_, sub_filter_, papers);
-          if(hint == no_tet) hint = papers_hints[j];
-          insert_run(policy, papers_kernel, j, stop, end, first_new, duplicate_of, hint, failures[j], progress, 0,
-                     std::size_t(stop - begin));
-          next_fresh[j] = papers_kernel.slots().next_fresh;
-        }
       });
     });
-    papers_rule_partitions_ = int(std::count(on_papers_rule.begin(), on_papers_rule.end(), 1));
 
     // Unused fresh slots and the partitions' free lists go back to the mesh.
     for(int j = 0; j < partitions; ++j) {
@@ -715,29 +664,20 @@ private:
   // another task is rewriting.  Only the slots below `end` hold cells: the
   // fresh ranges above are unwritten (a partition that owns nothing made the
   // scan run into them and read garbage vertex ids).
-  template <class Ownership>
   std::vector<Tet_id> owned_start_tets(int partitions, Tet_id end) const
   {
     std::vector<Tet_id> hints(partitions, no_tet);
     int missing = partitions;
-    Ownership ownership;
+    Partition_ownership ownership;
     ownership.partition_of_vertex = partition_of_vertex_.data();
-    auto consider = [&](Tet_id t, std::uint8_t j) {
-      if(hints[j] != no_tet) return;
+    for(Tet_id t = 0; t < end && missing > 0; ++t) {
+      if(!m_.is_live(t)) continue;
+      const std::uint8_t j = partition_of_vertex_[m_.vertex(t, 0)];
       ownership.partition = j;
-      if(ownership.owns(m_, t)) {
+      if(hints[j] == no_tet && ownership.owns(m_, t)) {
         hints[j] = t;
         --missing;
       }
-    };
-    for(Tet_id t = 0; t < end && missing > 0; ++t) {
-      if(!m_.is_live(t)) continue;
-      const std::uint8_t j0 = partition_of_vertex_[m_.vertex(t, 0)];
-      consider(t, j0);
-      // A tetrahedron owned under Partition_ownership_three_of_four has
-      // vertex 0 or vertex 1 in the partition.
-      const std::uint8_t j1 = partition_of_vertex_[m_.vertex(t, 1)];
-      if(Ownership::shares_neighbors && j1 != j0) consider(t, j1);
     }
     return hints;
   }
@@ -745,7 +685,6 @@ private:
   Flat_storage& m_;
   Static_filter filter_;
   Sub_determinant_filter sub_filter_;
-  int papers_rule_partitions_ = 0; // in the last attempt
   bool quarter_cut_first_ = false;
   double lo_[3], hi_[3];
   std::uint64_t seed_;

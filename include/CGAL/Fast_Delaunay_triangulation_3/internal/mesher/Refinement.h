@@ -20,14 +20,12 @@
 // with its own per-point step, Constrained_point_insertion: the kernel's
 // WALK (one that gives up, the mesh not being Delaunay), the constrained
 // star-shaped cavity, then the kernel's DELAUNAYBALL (fill_hole).  A
-// partition owns the tetrahedra whose vertices are all in it (stricter than
-// the paper's three of four, which Delaunay insertion uses: the constrained
-// cavity also writes the subdomain and constraint entries of its neighbours);
-// a point whose walk leaves them, or whose cavity reaches another one, is
-// tried again with new partitions, and the last ones sequentially
-// (§3.3-§3.4).  Points dropped by the rules above are dropped whatever the
-// partitions.  The mesh depends on the thread count (the partitions), never
-// on the scheduling.
+// partition owns the tetrahedra whose vertices are all in it
+// (Partition_ownership, as in Delaunay insertion); a point whose walk cannot
+// stay in them, or whose cavity reaches another one, is tried again with new
+// partitions, and the last ones sequentially (§3.3-§3.4).  Points dropped by
+// the rules above are dropped whatever the partitions.  The mesh depends on
+// the thread count (the partitions), never on the scheduling.
 
 #ifndef CGAL_FDT3_INTERNAL_MESHER_REFINEMENT_H
 #define CGAL_FDT3_INTERNAL_MESHER_REFINEMENT_H
@@ -113,7 +111,6 @@ inline bool circumcentre(const double* a, const double* b, const double* c, cons
 class Constrained_point_insertion
 {
 public:
-  static constexpr bool shares_neighbors_allowed = false;
   template <class Ownership, class Slots, class Paths = Default_paths>
   using Kernel = Delaunay_kernel<Ownership, Slots, Walk_giving_up, Paths>;
 
