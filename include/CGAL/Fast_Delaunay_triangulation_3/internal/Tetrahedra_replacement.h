@@ -236,16 +236,13 @@ void replace_tetrahedra(Flat_storage& m, const Tet_id* region, std::size_t regio
     }
   }
   // The boundary check comes first, so that a bad call changes nothing.
-  const auto same = [](const Vertex_id* x, const Vertex_id* y) {
-    return x[0] == y[0] && x[1] == y[1] && x[2] == y[2];
-  };
   std::size_t boundary_facets_made = 0;
   for(std::size_t k = 0; k < made_size; ++k)
     for(int f = 0; f < 4; ++f) {
       Vertex_id key[3];
       sorted_facet_key(made[k].data(), f, key);
       for(Region_facet& b : boundary)
-        if(!b.used && same(b.key, key)) {
+        if(!b.used && replacement_detail::same_key(b.key, key)) {
           b.used = true;
           ++boundary_facets_made;
           break;
@@ -273,7 +270,7 @@ void replace_tetrahedra(Flat_storage& m, const Tet_id* region, std::size_t regio
       const Facet_code here = facet_code(slots[k], f);
       bool linked = false;
       for(Region_facet& b : boundary)
-        if(!b.used && same(b.key, facet.key)) {
+        if(!b.used && replacement_detail::same_key(b.key, facet.key)) {
           b.used = true;
           m.tets[slots[k]].n[f] = b.outside;
           m.neighbor_code(b.outside) = here;
@@ -282,7 +279,7 @@ void replace_tetrahedra(Flat_storage& m, const Tet_id* region, std::size_t regio
         }
       if(linked) continue;
       for(std::size_t j = 0; j < open.size(); ++j)
-        if(same(open[j].key, facet.key)) {
+        if(replacement_detail::same_key(open[j].key, facet.key)) {
           m.tets[slots[k]].n[f] = open[j].outside;
           m.neighbor_code(open[j].outside) = here;
           open[j] = open.back();
