@@ -9,11 +9,15 @@
 // thread count.  The inputs are small (this file also runs under
 // ThreadSanitizer), so the partitions' threshold is lowered for the
 // partitioned attempts to run at all, and every test asserts they did.
+// The boundary recovery's threads (the region's search, our flips beside
+// TetGen's calls, the checks of the replacements, the facet look-ups) on
+// CGAL's fandisk: the same mesh and flags as one thread's.
 
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
 #include <gtest/gtest.h>
 
+#include "cgal_data_surface.h"
 #include "mesher_checks.h"
 #include "mesher_shapes.h"
 
@@ -165,6 +169,68 @@ TEST(ParallelRefinement, TinyPartitionsFallBackToSequential)
   const Mesh mesh = CGAL::Fast_mesher_3::mesh_surfaces(c.surface.points, c.surface.triangles, options, &stats);
   expect_valid_mesh(c, mesh, unrefined_mesh(c), options);
   EXPECT_GT(stats.partitioned_attempts, 0u);
+}
+
+namespace fm = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
+namespace fi = CGAL::Fast_Delaunay_triangulation_3_internal;
+
+// The recovered mesh's records, slot by slot, and the constrained flags.
+struct Recovered
+{
+  std::vector<fm::Triangle_key> missing;
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<fi::Vertex_id, 4>> tets;
+  std::vector<std::array<fi::Facet_code, 4>> neighbours;
+  std::vector<std::uint8_t> constrained;
+  fm::Recovery_report report;
+};
+
+Recovered recover_with_threads(const fm::Surface_soup& soup, int threads)
+{
+  Recovered r;
+  fm::Constrained_mesh cm;
+  fm::empty_mesh(soup, 1, cm);
+  cm.fit_slot_arrays();
+  const std::vector<fm::Triangle_key> input = fm::input_triangle_keys(soup, cm.vertex_of_input);
+  r.missing = fm::missing_facets(cm.mesh, input, threads);
+  EXPECT_TRUE(fm::recover_locally(input, r.missing, cm, r.report, threads));
+  cm.fit_slot_arrays();
+  fm::flag_constrained_facets(soup, cm, threads);
+  const fi::Flat_storage& m = cm.mesh;
+  for(fi::Vertex_id v = 0; v < m.vertices.size(); ++v) r.points.push_back({m.point(v)[0], m.point(v)[1], m.point(v)[2]});
+  for(fi::Tet_id t = 0; t < m.number_of_slots(); ++t) {
+    if(!m.is_live(t)) continue;
+    const fi::Tet_record& record = m.tets[t];
+    r.tets.push_back({record.v[0], record.v[1], record.v[2], record.v[3]});
+    r.neighbours.push_back({record.n[0], record.n[1], record.n[2], record.n[3]});
+  }
+  r.constrained = cm.constrained;
+  return r;
+}
+
+TEST(ParallelRecovery, SameMeshAsOneThread)
+{
+  Surface s;
+  if(!mesher_shapes::read_cgal_data_surface("fandisk.off", s))
+    GTEST_SKIP() << FDT3_CGAL_DATA_DIR "/fandisk.off is missing (apt install libcgal-demo, re-run CMake)";
+  const fm::Surface_soup soup = CGAL::Fast_mesher_3::mesher_detail::surfaces_from_triangles(s.points, s.triangles);
+  const Recovered one = recover_with_threads(soup, 1);
+  // Enough missing triangles for the region's search to use two runs, and
+  // components of both kinds, so that the flips run beside TetGen.
+  EXPECT_GT(one.missing.size(), 128u);
+  EXPECT_GT(one.report.flipped_components, 0u);
+  EXPECT_GT(one.report.tetgen_components, 0u);
+  for(int threads : {2, 3}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    const Recovered more = recover_with_threads(soup, threads);
+    EXPECT_TRUE(more.missing == one.missing);
+    EXPECT_EQ(more.points, one.points);
+    EXPECT_EQ(more.tets, one.tets);
+    EXPECT_EQ(more.neighbours, one.neighbours);
+    EXPECT_EQ(more.constrained, one.constrained);
+    EXPECT_EQ(more.report.flipped_components, one.report.flipped_components);
+    EXPECT_EQ(more.report.steiner_points, one.report.steiner_points);
+  }
 }
 
 } // namespace test_mesher_parallel

@@ -218,7 +218,7 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
   stats.steiner_points = recovery.steiner_points;
 
   Clock::time_point t1 = Clock::now();
-  flag_constrained_facets(soup, cm);
+  flag_constrained_facets(soup, cm, std::max(1, options.threads));
   colour_volumes(cm);
   set_size_bounds(options, scaling, cm.size);
   surface_sizes(soup, cm);

@@ -48,6 +48,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -86,18 +87,13 @@ inline bool contains(const std::vector<Triangle_key>& sorted, const Triangle_key
   return std::binary_search(sorted.begin(), sorted.end(), k);
 }
 
-// The sorted `wanted` keys that are not facets of a live tetrahedron of m.
-inline std::vector<Triangle_key> missing_facets(const Flat_storage& m, const std::vector<Triangle_key>& wanted)
+// The sorted `wanted` keys that are not facets of a live tetrahedron of m,
+// searched for on `threads` threads.
+inline std::vector<Triangle_key> missing_facets(const Flat_storage& m, const std::vector<Triangle_key>& wanted,
+                                                int threads = 1)
 {
-  std::vector<char> found(wanted.size(), 0);
   const Triangles_by_smallest_vertex lookup(wanted, m.vertices.size());
-  for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
-    if(!m.is_live(t) || m.is_ghost(t)) continue;
-    for(int f = 0; f < 4; ++f) {
-      const std::size_t i = lookup.find(facet_key(m, t, f));
-      if(i != Triangles_by_smallest_vertex::none) found[i] = 1;
-    }
-  }
+  const std::vector<char> found = listed_facets(m, lookup, wanted.size(), threads, [](Tet_id, int) {});
   std::vector<Triangle_key> missing;
   for(std::size_t i = 0; i < wanted.size(); ++i)
     if(!found[i]) missing.push_back(wanted[i]);
@@ -322,26 +318,34 @@ private:
   std::vector<Tet_id> parent_;
 };
 
-inline Recovery_region recovery_region(const Flat_storage& m, const std::vector<Triangle_key>& missing)
+// The tetrahedra that may meet each of a run of missing triangles: the
+// run's k-th triangle's are tets[end_of[k - 1]..end_of[k]) (from 0 for the
+// first), the first of them where it leaves its first corner.
+struct Triangle_fronts
 {
-  Recovery_region region;
-  region.in_region.assign(m.number_of_slots(), 0);
-  const std::vector<Tet_id> incident = incident_tetrahedra(m);
-  Tet_partition partition(m.number_of_slots());
+  std::vector<Tet_id> tets;
+  std::vector<std::size_t> end_of;
+};
+
+// The fronts of the missing triangles [begin, end); reads the mesh only.
+inline void search_fronts(const Flat_storage& m, const std::vector<Tet_id>& incident,
+                          const std::vector<Triangle_key>& missing, std::size_t begin, std::size_t end,
+                          Triangle_fronts& fronts)
+{
   std::vector<std::uint32_t> seen(m.number_of_slots(), 0);
   std::uint32_t stamp = 0;
-  std::vector<Tet_id> star, front, unsorted, met_by(missing.size());
-  for(std::size_t i = 0; i < missing.size(); ++i) {
+  std::vector<Tet_id> star;
+  for(std::size_t i = begin; i < end; ++i) {
     const Triangle_key& tri = missing[i];
     ++stamp;
     const Vertex_id a = tri.v[0];
     CGAL_assertion(incident[a] != no_tet);
     star.assign(1, incident[a]);
     seen[incident[a]] = stamp;
-    front.clear();
+    const std::size_t first = fronts.tets.size();
     for(std::size_t k = 0; k < star.size(); ++k) {
       const Tet_id t = star[k];
-      if(may_meet_triangle(m, t, tri)) front.push_back(t);
+      if(may_meet_triangle(m, t, tri)) fronts.tets.push_back(t);
       for(int f = 0; f < 4; ++f) {
         const Tet_id u = m.neighbor(t, f);
         if(m.vertex(t, f) == a || m.is_ghost(u) || seen[u] == stamp) continue;
@@ -350,27 +354,55 @@ inline Recovery_region recovery_region(const Flat_storage& m, const std::vector<
       }
     }
     // A missing triangle leaves its corner through some tetrahedron.
-    CGAL_assertion(!front.empty());
-    met_by[i] = front.front();
+    CGAL_assertion(fronts.tets.size() > first);
     // A new stamp for the search: star tetrahedra rejected above are tested
     // again when the search reaches them, which is rare and cheap.
     ++stamp;
-    for(Tet_id t : front) seen[t] = stamp;
-    for(std::size_t k = 0; k < front.size(); ++k) {
-      const Tet_id t = front[k];
-      partition.join(t, met_by[i]);
-      if(!region.in_region[t]) {
-        region.in_region[t] = 1;
-        unsorted.push_back(t);
-      }
+    for(std::size_t k = first; k < fronts.tets.size(); ++k) seen[fronts.tets[k]] = stamp;
+    for(std::size_t k = first; k < fronts.tets.size(); ++k) {
+      const Tet_id t = fronts.tets[k];
       for(int f = 0; f < 4; ++f) {
         const Tet_id u = m.neighbor(t, f);
         if(m.is_ghost(u) || seen[u] == stamp) continue;
         seen[u] = stamp;
-        if(may_meet_triangle(m, u, tri)) front.push_back(u);
+        if(may_meet_triangle(m, u, tri)) fronts.tets.push_back(u);
       }
     }
+    fronts.end_of.push_back(fronts.tets.size());
   }
+}
+
+// The searches run on `threads` threads, each on a run of the missing
+// triangles (a search costs a few microseconds: runs of at least 64), and
+// are joined in the triangles' order, as one thread would.
+inline Recovery_region recovery_region(const Flat_storage& m, const std::vector<Triangle_key>& missing,
+                                       int threads = 1)
+{
+  Recovery_region region;
+  region.in_region.assign(m.number_of_slots(), 0);
+  const std::vector<Tet_id> incident = incident_tetrahedra(m);
+  const int runs = static_cast<int>(
+      std::max<std::size_t>(1, std::min<std::size_t>(std::max(threads, 1), missing.size() / 64)));
+  std::vector<Triangle_fronts> fronts(runs);
+  for_each_chunk(runs, [&](int r) {
+    search_fronts(m, incident, missing, chunk_begin(missing.size(), runs, r), chunk_begin(missing.size(), runs, r + 1),
+                  fronts[r]);
+  });
+  Tet_partition partition(m.number_of_slots());
+  std::vector<Tet_id> unsorted, met_by(missing.size());
+  std::size_t i = 0;
+  for(const Triangle_fronts& run : fronts)
+    for(std::size_t k = 0, first = 0; k < run.end_of.size(); first = run.end_of[k++], ++i) {
+      met_by[i] = run.tets[first];
+      for(std::size_t j = first; j < run.end_of[k]; ++j) {
+        const Tet_id t = run.tets[j];
+        partition.join(t, met_by[i]);
+        if(!region.in_region[t]) {
+          region.in_region[t] = 1;
+          unsorted.push_back(t);
+        }
+      }
+    }
   for(Tet_id t : unsorted)
     for(int f = 0; f < 4; ++f) {
       const Tet_id u = m.neighbor(t, f);
@@ -808,16 +840,24 @@ private:
   std::size_t present_ = 0;
 };
 
-// Component c by flips when it has at most `max_tets` tetrahedra (larger
-// ones were not recovered by flips on CGAL's mechanical parts);
-// appends its new tetrahedra to `tets` and returns true, or returns false.
-// The flips must also keep the input triangles the component already had.
+// Larger components were not recovered by flips on CGAL's mechanical parts.
+constexpr std::size_t max_flipped_component = 12;
+
+inline std::size_t component_size(const Recovery_region& region, std::size_t c)
+{
+  return region.component_begin[c + 1] - region.component_begin[c];
+}
+
+// Component c by flips when it has at most max_flipped_component
+// tetrahedra; appends its new tetrahedra to `tets` and returns true, or
+// returns false.  The flips must also keep the input triangles the
+// component already had.
 inline bool recover_by_flips(const Flat_storage& m, const Recovery_region& region, std::size_t c,
                              const std::vector<Triangle_key>& input, const std::vector<Triangle_key>& missing_here,
-                             std::vector<std::array<Vertex_id, 4>>& tets, std::size_t max_tets = 12)
+                             std::vector<std::array<Vertex_id, 4>>& tets)
 {
   const std::size_t begin = region.component_begin[c], end = region.component_begin[c + 1];
-  if(end - begin > max_tets) return false;
+  if(end - begin > max_flipped_component) return false;
   Small_component component;
   std::vector<Triangle_key> wanted = missing_here;
   for(std::size_t k = begin; k < end; ++k) {
@@ -896,83 +936,160 @@ inline Component_replacement component_replacement(const Flat_storage& m, const 
   return r;
 }
 
+// How component c was recovered: by our flips (their tetrahedra, in mesh
+// vertex ids), or by TetGen (its mesh of the component's local problem and
+// the tetrahedra of it kept).
+struct Component_recovery
+{
+  bool by_flips = false;
+  std::vector<std::array<Vertex_id, 4>> flipped;
+  Local_problem problem;
+  Tetgen_mesh mesh;
+  std::vector<std::size_t> kept; // empty: not recovered by TetGen
+};
+
+// Component c by TetGen: hull facets left out first (the convex hull of the
+// component's points meshed, then carved); then, should TetGen split a wall
+// that way, as constraints too, TetGen removing what lies outside them: on
+// couplingdown's one failing component this second try holds.  False when
+// neither fits.  `local` as for local_problem.
+inline bool recover_component_with_tetgen(const Flat_storage& m, const Recovery_region& region, std::size_t c,
+                                          const std::vector<Triangle_key>& input,
+                                          const std::vector<Triangle_key>& missing_here,
+                                          std::vector<Vertex_id>& local, Component_recovery& out)
+{
+  for(bool with_hull_facets : {false, true}) {
+    out.problem = local_problem(m, region, c, input, missing_here, local, with_hull_facets);
+    try {
+      out.mesh = tetgen_recovery(out.problem.points, out.problem.triangles, with_hull_facets ? "pYMO0zQ" : "pYcMO0zQ");
+    } catch(const std::runtime_error&) {
+      continue;
+    }
+    out.kept = carve_region(out.problem, out.mesh);
+    if(!out.kept.empty()) return true;
+  }
+  return false;
+}
+
+// Calls a() and b(), side by side on two threads when `parallel`; an
+// exception from either is rethrown once both have returned.
+template <class A, class B>
+void run_side_by_side(bool parallel, const A& a, const B& b)
+{
+  std::exception_ptr error[2];
+  auto guarded = [&](int k) {
+    try {
+      if(k == 0) a();
+      else b();
+    } catch(...) {
+      error[k] = std::current_exception();
+    }
+  };
+  if(parallel) {
+    for_each_chunk(2, guarded);
+  } else {
+    guarded(0);
+    guarded(1);
+  }
+  for(const std::exception_ptr& e : error)
+    if(e) std::rethrow_exception(e);
+}
+
 // RECOVERBOUNDARY of the region only, component by component, in place;
 // returns true, or leaves the mesh untouched and returns false when TetGen
 // fails on a component or its mesh does not fit the walls (and throws
 // logic_error, the mesh untouched too, should a recovered component not
 // close up with the rest, which would be a bug).  The rest of the
 // mesh (on fandisk 97% of its tetrahedra) is not rebuilt: that took as long
-// as the region's search.
+// as the region's search.  With `threads` > 1, the region's search, our
+// flips beside TetGen's calls, and the checks of the replacements run on
+// several threads; the mesh is the same whatever the number.
 inline bool recover_locally(const std::vector<Triangle_key>& input, const std::vector<Triangle_key>& missing,
-                            Constrained_mesh& out, Recovery_report& report)
+                            Constrained_mesh& out, Recovery_report& report, int threads = 1)
 {
   Flat_storage& m = out.mesh;
-  const Recovery_region region = recovery_region(m, missing);
+  const Recovery_region region = recovery_region(m, missing, threads);
   report.region_tetrahedra = region.tets.size();
-  std::vector<std::vector<Triangle_key>> missing_in(region.number_of_components());
+  const std::size_t components = region.number_of_components();
+  std::vector<std::vector<Triangle_key>> missing_in(components);
   for(std::size_t i = 0; i < missing.size(); ++i) missing_in[region.component_of_missing[i]].push_back(missing[i]);
 
   // Every component's tetrahedra first, so that a failure changes nothing.
-  // Steiner points get the ids after the mesh's vertices, in order.
-  std::vector<std::vector<std::array<Vertex_id, 4>>> recovered(region.number_of_components());
-  std::vector<std::array<double, 3>> steiner_points;
+  // TetGen keeps its predicates' error bounds in globals that each call
+  // sets from its input's box: its calls run one after the other, on the
+  // large components (on fandisk one of 950 tetrahedra takes half of the
+  // recovery) while our flips try the small ones; the small ones the flips
+  // miss go to TetGen last.
+  std::vector<Component_recovery> recovery(components);
+  std::vector<std::size_t> small, large;
+  for(std::size_t c = 0; c < components; ++c)
+    (component_size(region, c) <= max_flipped_component ? small : large).push_back(c);
   std::vector<Vertex_id> local(m.vertices.size(), Vertex_id(-1));
-  for(std::size_t c = 0; c < region.number_of_components(); ++c) {
-    if(recover_by_flips(m, region, c, input, missing_in[c], recovered[c])) {
+  bool recovered = true;
+  auto by_tetgen = [&](std::size_t c) {
+    recovered = recovered && recover_component_with_tetgen(m, region, c, input, missing_in[c], local, recovery[c]);
+  };
+  run_side_by_side(
+      threads > 1 && !large.empty() && !small.empty(),
+      [&] {
+        for(std::size_t c : large) by_tetgen(c);
+      },
+      [&] {
+        for(std::size_t c : small)
+          recovery[c].by_flips = recover_by_flips(m, region, c, input, missing_in[c], recovery[c].flipped);
+      });
+  for(std::size_t c : small)
+    if(!recovery[c].by_flips) by_tetgen(c);
+  if(!recovered) return false;
+
+  // Steiner points get the ids after the mesh's vertices, in component
+  // order; those outside a component went with the tetrahedra dropped.
+  std::vector<std::vector<std::array<Vertex_id, 4>>> made(components);
+  std::vector<std::array<double, 3>> steiner_points;
+  for(std::size_t c = 0; c < components; ++c) {
+    Component_recovery& r = recovery[c];
+    if(r.by_flips) {
       ++report.flipped_components;
+      made[c] = std::move(r.flipped);
       continue;
     }
     ++report.tetgen_components;
-    Local_problem problem;
-    Tetgen_mesh mesh;
-    std::vector<std::size_t> kept;
-    // Hull facets left out first (the convex hull of the component's points
-    // meshed, then carved); then, should TetGen split a wall that way, as
-    // constraints too, TetGen removing what lies outside them: on
-    // couplingdown's one failing component this second try holds.
-    for(bool with_hull_facets : {false, true}) {
-      problem = local_problem(m, region, c, input, missing_in[c], local, with_hull_facets);
-      try {
-        mesh = tetgen_recovery(problem.points, problem.triangles, with_hull_facets ? "pYMO0zQ" : "pYcMO0zQ");
-      } catch(const std::runtime_error&) {
-        continue;
-      }
-      kept = carve_region(problem, mesh);
-      if(!kept.empty()) break;
-    }
-    if(kept.empty()) return false;
-    // Steiner points outside the component went with the tetrahedra dropped.
-    std::vector<Vertex_id> global(mesh.points.size(), Vertex_id(-1));
-    std::copy(problem.vertex_of_local.begin(), problem.vertex_of_local.end(), global.begin());
-    for(std::size_t t : kept) {
+    std::vector<Vertex_id> global(r.mesh.points.size(), Vertex_id(-1));
+    std::copy(r.problem.vertex_of_local.begin(), r.problem.vertex_of_local.end(), global.begin());
+    for(std::size_t t : r.kept) {
       std::array<Vertex_id, 4> tv;
       for(int i = 0; i < 4; ++i) {
-        const Vertex_id v = mesh.tets[t][i];
+        const Vertex_id v = r.mesh.tets[t][i];
         if(global[v] == Vertex_id(-1)) {
           global[v] = static_cast<Vertex_id>(m.vertices.size() + steiner_points.size());
-          steiner_points.push_back(mesh.points[v]);
+          steiner_points.push_back(r.mesh.points[v]);
         }
         tv[i] = global[v];
       }
-      recovered[c].push_back(tv);
+      made[c].push_back(tv);
     }
   }
   // Each replacement checked in full before the first is made: one that
   // does not close up (a bug, not a bad input) leaves the mesh as it was.
   // The checks read each component's own tetrahedra and ghosts, which the
   // other components' replacements do not change.
-  std::vector<Component_replacement> replacements;
-  replacements.reserve(region.number_of_components());
-  for(std::size_t c = 0; c < region.number_of_components(); ++c) {
-    replacements.push_back(component_replacement(m, region, c, std::move(recovered[c])));
-    const Component_replacement& r = replacements.back();
-    try {
-      check_replacement(m, r.old.data(), r.old.size(), r.made.data(), r.made.size());
-    } catch(const std::logic_error& e) {
-      throw std::logic_error(std::string("Tetrahedral_mesher: a recovered component does not fit its walls: ") +
-                             e.what());
+  std::vector<Component_replacement> replacements(components);
+  std::vector<std::string> misfit(components);
+  const int runs = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(std::max(threads, 1), components)));
+  for_each_chunk(runs, [&](int k) {
+    for(std::size_t c = chunk_begin(components, runs, k); c < chunk_begin(components, runs, k + 1); ++c) {
+      replacements[c] = component_replacement(m, region, c, std::move(made[c]));
+      const Component_replacement& r = replacements[c];
+      try {
+        check_replacement(m, r.old.data(), r.old.size(), r.made.data(), r.made.size());
+      } catch(const std::logic_error& e) {
+        misfit[c] = e.what();
+      }
     }
-  }
+  });
+  for(const std::string& why : misfit)
+    if(!why.empty())
+      throw std::logic_error("Tetrahedral_mesher: a recovered component does not fit its walls: " + why);
   for(const auto& p : steiner_points) {
     Vertex_record record;
     std::copy(p.begin(), p.end(), record.xyz);
@@ -999,9 +1116,10 @@ inline Recovery_report empty_mesh_and_recovery(const Surface_soup& soup, int thr
   empty_mesh(soup, threads, out);
   const Clock::time_point t1 = Clock::now();
   const std::vector<Triangle_key> input = input_triangle_keys(soup, out.vertex_of_input);
-  const std::vector<Triangle_key> missing = missing_facets(out.mesh, input);
+  const std::vector<Triangle_key> missing = missing_facets(out.mesh, input, threads);
   report.missing_triangles = missing.size();
-  if(!missing.empty() && !recover_locally(input, missing, out, report)) recover_with_tetgen(soup, out, report);
+  if(!missing.empty() && !recover_locally(input, missing, out, report, threads))
+    recover_with_tetgen(soup, out, report);
   report.empty_mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
   report.recovery_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
   set_box(soup.points, out);

@@ -18,6 +18,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Delaunay_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Radix_sort.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Size_field.h>
 
 #include <algorithm>
@@ -96,6 +97,36 @@ private:
   std::vector<std::size_t> first_;
   std::vector<std::size_t> index_;
 };
+
+// Which listed triangles are facets of m's live tetrahedra: found[i] for
+// triangle i of `lookup` (`listed` of them).  `on_facet(t, f)` sees every
+// facet f of tetrahedron t that is listed (a ghost's one facet, 3,
+// included).  The slots are cut into one run per thread: `on_facet` may
+// run concurrently, never twice at once for the same t.
+template <class On_facet>
+std::vector<char> listed_facets(const Flat_storage& m, const Triangles_by_smallest_vertex& lookup, std::size_t listed,
+                                int threads, const On_facet& on_facet)
+{
+  const std::size_t slots = m.number_of_slots();
+  const int chunks = chunk_count(slots, threads);
+  // Two runs may find the same triangle (its two sides): each has its own flags.
+  std::vector<std::vector<char>> found(chunks, std::vector<char>(listed, 0));
+  for_each_chunk(chunks, [&](int c) {
+    const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
+    for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
+      if(!m.is_live(t)) continue;
+      for(int f = m.is_ghost(t) ? 3 : 0; f < 4; ++f) {
+        const std::size_t i = lookup.find(facet_key(m, t, f));
+        if(i == Triangles_by_smallest_vertex::none) continue;
+        found[c][i] = 1;
+        on_facet(t, f);
+      }
+    }
+  });
+  for(int c = 1; c < chunks; ++c)
+    for(std::size_t i = 0; i < listed; ++i) found[0][i] |= found[c][i];
+  return std::move(found[0]);
+}
 
 struct Constrained_mesh
 {

@@ -22,25 +22,16 @@ namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 namespace mesher {
 
-// Sets the constrained bits; throws if an input triangle is not a facet.
-inline void flag_constrained_facets(const Surface_soup& soup, Constrained_mesh& cm)
+// Sets the constrained bits, on `threads` threads; throws if an input
+// triangle is not a facet.
+inline void flag_constrained_facets(const Surface_soup& soup, Constrained_mesh& cm, int threads = 1)
 {
   const std::vector<Triangle_key> keys = input_triangle_keys(soup, cm.vertex_of_input);
-  std::vector<char> found(keys.size(), 0);
-  const Flat_storage& m = cm.mesh;
-  const Triangles_by_smallest_vertex lookup(keys, m.vertices.size());
-  for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
-    cm.constrained[t] = 0;
-    if(!m.is_live(t)) continue;
-    for(int f = 0; f < 4; ++f) {
-      if(m.is_ghost(t) && f != 3) continue;
-      const std::size_t i = lookup.find(facet_key(m, t, f));
-      if(i != Triangles_by_smallest_vertex::none) {
-        cm.constrained[t] |= std::uint8_t(1u << f);
-        found[i] = 1;
-      }
-    }
-  }
+  const Triangles_by_smallest_vertex lookup(keys, cm.mesh.vertices.size());
+  std::fill(cm.constrained.begin(), cm.constrained.end(), 0);
+  const std::vector<char> found = listed_facets(cm.mesh, lookup, keys.size(), threads, [&](Tet_id t, int f) {
+    cm.constrained[t] |= std::uint8_t(1u << f);
+  });
   if(std::count(found.begin(), found.end(), 0) != 0)
     throw std::runtime_error("Tetrahedral_mesher: boundary recovery left input triangles out of the mesh");
 }
