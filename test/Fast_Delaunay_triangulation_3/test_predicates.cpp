@@ -3,6 +3,8 @@
 //    (bounding box) filter stage, have the sign of Epick's exact predicates
 //    on random, nearly degenerate (1 ulp off a plane or a sphere), grid,
 //    offset and scaled inputs, scales around the filters' limits included;
+//  - the filtered in-circle test of coplanar points has the sign of Epick's
+//    exact one on exactly coplanar lattice points, cocircular ones included;
 //  - the perturbed in-sphere and in-circle tests equal
 //    Delaunay_triangulation_3's side_of_oriented_sphere(..., true) and
 //    coplanar_side_of_bounded_circle(..., true) on cospherical and cocircular
@@ -294,9 +296,11 @@ TEST(Side_of_oriented_sphere, RecordConflictTestAsScalarOne)
           q = {f.scale * s.x + f.offset, f.scale * s.y, f.scale * s.z};
         }
       }
-      // Positive orientation, as in the triangulation; skip flat tetrahedra.
+      // Positive orientation, as in the triangulation; skip flat tetrahedra,
+      // and a fifth point drawn again (the perturbation asserts that no two
+      // points are equal).
       const int o = cgal_orientation(p[0], p[1], p[2], p[3]);
-      if(o == 0) continue;
+      if(o == 0 || std::count(p.begin(), p.end() - 1, p[4]) != 0) continue;
       if(o < 0) std::swap(p[0], p[1]);
       P::Vertex_record records[4];
       for(int k = 0; k < 4; ++k) {
@@ -637,6 +641,92 @@ TEST(Coplanar_orientation, SignOfCgalsExactPredicate)
   }
   EXPECT_GT(collinear_in_xy, 1000u);
   EXPECT_GT(near_collinear, 1000u);
+}
+
+// The filtered in-circle test of four coplanar points answers CGAL's exact
+// coplanar_side_of_bounded_circle: points of integer lattices in tilted
+// planes (so exactly coplanar in double), random ones, exactly cocircular
+// ones (the corners of the lattice's rectangles, the points of a circle of
+// the plane) and ones a lattice step off a circle, scaled by powers of two
+// (exact) from far below to far above the filter's range, and moved away
+// from the origin.
+TEST(Coplanar_side_of_bounded_circle, SignOfCgalsExactPredicate)
+{
+  Generator g(12);
+  // (u, v) -> origin + u * a + v * b: two planes through the lattice Z^3.
+  const std::array<std::array<Coordinates, 2>, 2> planes = {{{{{1, 2, 2}, {2, 1, -2}}}, {{{3, 0, 1}, {0, 5, 2}}}}};
+  const std::vector<std::pair<double, double>> frames = {
+      {1, 0}, {std::ldexp(1.0, -40), 0}, {std::ldexp(1.0, 40), 0}, {std::ldexp(1.0, -1000), 0},
+      {std::ldexp(1.0, 900), 0}, {1, std::ldexp(1.0, 30)}, {std::ldexp(1.0, -20), 1}};
+  std::size_t inside = 0, outside = 0, on_circle = 0;
+  for(const auto& frame : frames)
+    for(const auto& plane : planes) {
+      auto lattice_point = [&](long u, long v) {
+        Coordinates c;
+        for(int k = 0; k < 3; ++k)
+          c[k] = frame.second + frame.first * (double(u) * plane[0][k] + double(v) * plane[1][k]);
+        return c;
+      };
+      for(int i = 0; i < 2000; ++i) {
+        std::array<long, 8> uv;
+        if(i % 4 == 0) {
+          // The corners of a rectangle of the lattice: cocircular.
+          const long u0 = g.integer(-50, 50), v0 = g.integer(-50, 50);
+          const long du = g.integer(1, 20), dv = g.integer(1, 20);
+          uv = {u0, v0, u0 + du, v0, u0 + du, v0 + dv, u0, v0 + dv};
+        } else if(i % 4 == 1) {
+          // A lattice circle (u^2 + v^2 = 25 in lattice coordinates is no
+          // circle in space unless a, b are orthogonal and of equal length,
+          // which both planes' first pair is); the fourth point a step off.
+          const std::array<std::array<long, 2>, 12> circle = {
+              {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}}};
+          for(int k = 0; k < 4; ++k) {
+            const auto& c = circle[std::size_t(g.integer(0, 11))];
+            uv[2 * k] = c[0];
+            uv[2 * k + 1] = c[1];
+          }
+          if(g.integer(0, 1)) uv[6 + g.integer(0, 1)] += g.integer(0, 1) ? 1 : -1;
+        } else {
+          for(long& x : uv) x = g.integer(-1000, 1000);
+        }
+        const Coordinates p = lattice_point(uv[0], uv[1]), q = lattice_point(uv[2], uv[3]),
+                          r = lattice_point(uv[4], uv[5]), t = lattice_point(uv[6], uv[7]);
+        if(K().collinear_3_object()(to_point(p), to_point(q), to_point(r))) continue;
+        ASSERT_EQ(cgal_orientation(p, q, r, t), 0);
+        const int expected = static_cast<int>(K().coplanar_side_of_bounded_circle_3_object()(
+            to_point(p), to_point(q), to_point(r), to_point(t)));
+        ASSERT_EQ(P::coplanar_side_of_bounded_circle(p.data(), q.data(), r.data(), t.data()), expected)
+            << "frame " << frame.first << " + " << frame.second << ", case " << i;
+        ASSERT_EQ(P::coplanar_side_of_bounded_circle(q.data(), p.data(), r.data(), t.data()), expected);
+        (expected > 0 ? inside : expected < 0 ? outside : on_circle) += 1;
+      }
+    }
+  // Four points of a circle in the plane z = x, rounded (then z set to x
+  // again: exactly coplanar), nearly cocircular: the floating-point stage
+  // must leave most of them to the exact one.
+  std::size_t near_circle = 0;
+  for(double scale : {1.0, 1e-30, 1e30}) {
+    for(int i = 0; i < 3000; ++i) {
+      const double cx = scale * g.uniform(-1, 1), cy = scale * g.uniform(-1, 1), radius = scale * g.uniform(0.1, 1);
+      std::array<Coordinates, 4> c;
+      for(Coordinates& point : c) {
+        const double angle = g.uniform(0, 6.283185307179586);
+        point[0] = cx + radius * std::cos(angle) / std::sqrt(2.0);
+        point[1] = cy + radius * std::sin(angle);
+        point[2] = point[0];
+      }
+      if(K().collinear_3_object()(to_point(c[0]), to_point(c[1]), to_point(c[2]))) continue;
+      const int expected = static_cast<int>(K().coplanar_side_of_bounded_circle_3_object()(
+          to_point(c[0]), to_point(c[1]), to_point(c[2]), to_point(c[3])));
+      ASSERT_EQ(P::coplanar_side_of_bounded_circle(c[0].data(), c[1].data(), c[2].data(), c[3].data()), expected)
+          << "scale " << scale << ", case " << i;
+      ++near_circle;
+    }
+  }
+  EXPECT_GT(inside, 5000u);
+  EXPECT_GT(outside, 5000u);
+  EXPECT_GT(on_circle, 3000u);
+  EXPECT_GT(near_circle, 8000u);
 }
 
 // ---------------------------------------------------------------- filter constants

@@ -203,7 +203,7 @@ inline int side_of_sphere(const Flat_storage& m, Tet_id t, const double* p, bool
   const int o = orientation(w[0], w[1], w[2], p);
   if(o != 0) return o;
   return perturb ? perturbed_coplanar_side_of_bounded_circle(w[0], w[1], w[2], p)
-                 : predicates_detail::coplanar_side_of_bounded_circle_exact(w[0], w[1], w[2], p);
+                 : coplanar_side_of_bounded_circle(w[0], w[1], w[2], p);
 }
 
 // Delaunay_triangulation_3::nearest_vertex in dimension 3: from the finite

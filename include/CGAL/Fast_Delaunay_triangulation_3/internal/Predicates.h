@@ -808,13 +808,56 @@ inline int perturbed_tie_break(const double* p0, const double* p1, const double*
   return -1;
 }
 
+// CGAL's coplanar_side_of_bounded_circle(p, q, r, t) for coplanar p, q,
+// r, t (p, q, r not collinear): +1 inside the circle through p, q, r, 0 on
+// it, -1 outside.  A floating-point stage first: with P = p - t, Q, R alike
+// and the plane's normal n = (q - p) x (r - p),
+//   S = n . (|P|^2 Q x R + |Q|^2 R x P + |R|^2 P x Q)
+// is |n| times the in-circle determinant of p, q, r, t in an orthonormal
+// frame of the plane in which p, q, r turn counterclockwise (each cross
+// product of two vectors of the plane is its 2D determinant times the unit
+// normal), so S has the sign of the answer.  Evaluated with at most 10
+// roundings on any path, S is off by at most gamma_10 = 10 eps (1 + 1e-15)
+// times its permanent (the same sums of absolute values); 16 eps covers
+// that and the rounding of the permanent itself.  On flat faces of a convex
+// hull every ghost conflict test of a point in their plane comes here
+// (fandisk's surface points: CGAL's interval filter was a tenth of their
+// Delaunay triangulation); ties and products that may have underflowed go
+// to CGAL's exact predicate.
+inline int coplanar_side_of_bounded_circle(const double* p, const double* q, const double* r, const double* t)
+{
+  const double P[3] = {p[0] - t[0], p[1] - t[1], p[2] - t[2]};
+  const double Q[3] = {q[0] - t[0], q[1] - t[1], q[2] - t[2]};
+  const double R[3] = {r[0] - t[0], r[1] - t[1], r[2] - t[2]};
+  const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const double b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+  const double lift_p = P[0] * P[0] + P[1] * P[1] + P[2] * P[2];
+  const double lift_q = Q[0] * Q[0] + Q[1] * Q[1] + Q[2] * Q[2];
+  const double lift_r = R[0] * R[0] + R[1] * R[1] + R[2] * R[2];
+  double sum = 0, permanent = 0;
+  for(int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const double qr = Q[j] * R[k] - Q[k] * R[j], rp = R[j] * P[k] - R[k] * P[j], pq = P[j] * Q[k] - P[k] * Q[j];
+    const double qr_abs = std::fabs(Q[j] * R[k]) + std::fabs(Q[k] * R[j]);
+    const double rp_abs = std::fabs(R[j] * P[k]) + std::fabs(R[k] * P[j]);
+    const double pq_abs = std::fabs(P[j] * Q[k]) + std::fabs(P[k] * Q[j]);
+    const double normal = a[j] * b[k] - a[k] * b[j];
+    const double normal_abs = std::fabs(a[j] * b[k]) + std::fabs(a[k] * b[j]);
+    sum += normal * (lift_p * qr + lift_q * rp + lift_r * pq);
+    permanent += normal_abs * (lift_p * qr_abs + lift_q * rp_abs + lift_r * pq_abs);
+  }
+  if(permanent > 1e-270 && permanent < 1e300 && std::fabs(sum) > 16 * Filter_bounds::unit_roundoff * permanent)
+    return sum > 0 ? 1 : -1;
+  return predicates_detail::coplanar_side_of_bounded_circle_exact(p, q, r, t);
+}
+
 // CGAL's coplanar_side_of_bounded_circle(..., perturb = true) for coplanar
 // p0, p1, p2, p (p0, p1, p2 not collinear): +1 inside, -1 outside.
 inline int perturbed_coplanar_side_of_bounded_circle(const double* p0, const double* p1,
                                                      const double* p2, const double* p)
 {
   using namespace predicates_detail;
-  const int side = coplanar_side_of_bounded_circle_exact(p0, p1, p2, p);
+  const int side = coplanar_side_of_bounded_circle(p0, p1, p2, p);
   if(side != 0) return side;
 
   const double* points[4] = {p0, p1, p2, p};
