@@ -402,11 +402,12 @@ private:
   {
     const Moore_grid grid(cm_.box_lo, cm_.box_hi, moore_bits_per_axis(points.size()));
     const Moore_curve curve(grid.bits_per_axis());
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(points.size());
+    std::vector<Key_value<std::uint32_t>> keyed(points.size()), scratch;
     for(std::size_t i = 0; i < points.size(); ++i) keyed[i] = {grid.key(curve, points[i].p), static_cast<std::uint32_t>(i)};
-    std::sort(keyed.begin(), keyed.end());
+    // Stable: points with one key keep their sampling order.
+    radix_sort(keyed, scratch, 3 * grid.bits_per_axis(), std::max(1, options_.threads));
     std::vector<Refinement_point> sorted(points.size());
-    for(std::size_t i = 0; i < points.size(); ++i) sorted[i] = points[keyed[i].second];
+    for(std::size_t i = 0; i < points.size(); ++i) sorted[i] = points[keyed[i].value];
     points.swap(sorted);
   }
 
