@@ -228,4 +228,57 @@ TEST(BoundaryRecovery, CgalDataCouplingSecondTry)
   EXPECT_GT(report.steiner_points, 0u);
 }
 
+// The exact overlap test of two triangles of one plane: interiors that
+// cross, nest or coincide meet; triangles sharing an edge or a corner, or
+// apart, do not.
+TEST(BoundaryRecovery, CoplanarInteriorsMeet)
+{
+  // In the plane z = x + y, so that no coordinate plane is the triangles'.
+  auto at = [](double x, double y) { return std::array<double, 3>{x, y, x + y}; };
+  const std::vector<std::array<double, 3>> p = {at(0, 0), at(4, 0), at(0, 4), at(4, 4),  at(1, 1),
+                                               at(2, 1), at(1, 2), at(-1, 2), at(5, 2), at(8, 0)};
+  auto triangle = [&](int a, int b, int c) { return std::array<const double*, 3>{p[a].data(), p[b].data(), p[c].data()}; };
+  EXPECT_TRUE(fm::coplanar_interiors_meet(triangle(0, 1, 2), triangle(4, 5, 6)));  // nested
+  EXPECT_TRUE(fm::coplanar_interiors_meet(triangle(4, 5, 6), triangle(0, 1, 2)));
+  EXPECT_TRUE(fm::coplanar_interiors_meet(triangle(0, 1, 2), triangle(7, 8, 3)));  // crossing
+  EXPECT_TRUE(fm::coplanar_interiors_meet(triangle(0, 1, 2), triangle(2, 1, 0)));  // the same
+  EXPECT_TRUE(fm::coplanar_interiors_meet(triangle(0, 1, 3), triangle(0, 1, 2)));  // one edge, same side
+  EXPECT_FALSE(fm::coplanar_interiors_meet(triangle(0, 1, 2), triangle(1, 3, 2))); // an edge shared
+  EXPECT_FALSE(fm::coplanar_interiors_meet(triangle(0, 1, 2), triangle(1, 9, 8))); // a corner shared
+  EXPECT_FALSE(fm::coplanar_interiors_meet(triangle(4, 5, 6), triangle(1, 9, 8))); // apart
+}
+
+// fandisk's components with their hull facets as constraints (the local
+// recovery's second try): some have a hull facet crossed by an input
+// triangle of a flat face, which the recovery never gives TetGen (it
+// crashed the process on them); TetGen meshes every other one.
+TEST(BoundaryRecovery, CgalDataFandiskNoCrossedHullFacetForTetgen)
+{
+  Surface s;
+  if(!read_cgal_data_surface("fandisk.off", s))
+    GTEST_SKIP() << FDT3_CGAL_DATA_DIR "/fandisk.off is missing (apt install libcgal-demo, re-run CMake)";
+  const fm::Surface_soup soup = soup_of(s);
+  Empty_mesh e = empty_mesh_of(soup);
+  const fm::Recovery_region region = fm::recovery_region(e.cm.mesh, e.missing);
+  std::vector<std::vector<fm::Triangle_key>> missing_in(region.number_of_components());
+  for(std::size_t i = 0; i < e.missing.size(); ++i) missing_in[region.component_of_missing[i]].push_back(e.missing[i]);
+  std::vector<fi::Vertex_id> local(e.cm.mesh.vertices.size(), fi::Vertex_id(-1));
+  std::size_t crossed = 0, meshed = 0;
+  for(std::size_t c = 0; c < region.number_of_components(); ++c) {
+    if(fm::component_size(region, c) <= fm::max_flipped_component) continue;
+    const fm::Local_problem problem = fm::local_problem(e.cm.mesh, region, c, e.input, missing_in[c], local, true);
+    if(fm::hull_facet_crosses_a_triangle(problem)) {
+      ++crossed;
+      continue;
+    }
+    try {
+      fm::tetgen_recovery(problem.points, problem.triangles, "pYMO0zQ");
+      ++meshed;
+    } catch(const std::runtime_error&) {
+    }
+  }
+  EXPECT_GT(crossed, 0u);
+  EXPECT_GT(meshed, 0u);
+}
+
 } // namespace test_mesher_recovery

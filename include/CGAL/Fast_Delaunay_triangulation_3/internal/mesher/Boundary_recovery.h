@@ -456,6 +456,7 @@ struct Local_problem
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<Vertex_id, 3>> triangles; // local ids
   std::vector<Region_wall> walls;                  // sorted by key
+  std::vector<std::array<Vertex_id, 3>> hull_facets; // with hull facets: those that are not input triangles
   double volume = 0;                               // six times the region's
 };
 
@@ -491,7 +492,12 @@ inline Local_problem local_problem(const Flat_storage& m, const Recovery_region&
       const Tet_id u = m.neighbor(t, f);
       const Triangle_key k = facet_key(m, t, f);
       if(m.is_ghost(u)) {
-        if(with_hull_facets || contains(input, k)) facets.push_back(local_key(k));
+        const bool is_input = contains(input, k);
+        if(with_hull_facets || is_input) facets.push_back(local_key(k));
+        if(with_hull_facets && !is_input) {
+          const Triangle_key h = local_key(k);
+          p.hull_facets.push_back({h.v[0], h.v[1], h.v[2]});
+        }
       } else if(!region.in_region[u]) {
         const Vertex_id* tv = m.vertex_ids(t);
         p.walls.push_back({local_key(k), local[tv[facet_vertex[f][0]]], local[tv[facet_vertex[f][1]]],
@@ -510,6 +516,47 @@ inline Local_problem local_problem(const Flat_storage& m, const Recovery_region&
   for(const Triangle_key& k : facets) p.triangles.push_back({k.v[0], k.v[1], k.v[2]});
   for(Vertex_id v : p.vertex_of_local) local[v] = unset;
   return p;
+}
+
+// Whether the interiors of triangles a and b, which lie in one plane, meet:
+// they do unless the line through an edge of one leaves the other on its
+// outer side, the line included (separating axes of two convex polygons of
+// the plane), each side decided exactly.
+inline bool coplanar_interiors_meet(const std::array<const double*, 3>& a, const std::array<const double*, 3>& b)
+{
+  auto separates = [](const std::array<const double*, 3>& x, const std::array<const double*, 3>& y) {
+    for(int e = 0; e < 3; ++e) {
+      bool outside = true;
+      for(int k = 0; k < 3 && outside; ++k)
+        outside = predicates_detail::coplanar_orientation_exact(x[e], x[(e + 1) % 3], x[(e + 2) % 3], y[k]) <= 0;
+      if(outside) return true;
+    }
+    return false;
+  };
+  return !separates(a, b) && !separates(b, a);
+}
+
+// Whether a hull facet of the problem and another of its triangles lie in
+// one plane with interiors that meet (an input triangle in a hull plane
+// crossing it).  TetGen is not given such a complex: on it, TetGen crashed
+// the process (a segmentation fault), as it did on 10 of fandisk's 39
+// components when their hull facets were constraints.
+inline bool hull_facet_crosses_a_triangle(const Local_problem& p)
+{
+  auto corners = [&p](const std::array<Vertex_id, 3>& t) {
+    return std::array<const double*, 3>{p.points[t[0]].data(), p.points[t[1]].data(), p.points[t[2]].data()};
+  };
+  for(const auto& h : p.hull_facets) {
+    const std::array<const double*, 3> hull = corners(h);
+    for(const auto& t : p.triangles) {
+      if(Triangle_key::of(t[0], t[1], t[2]) == Triangle_key::of(h[0], h[1], h[2])) continue;
+      const std::array<const double*, 3> other = corners(t);
+      bool coplanar = true;
+      for(int k = 0; k < 3 && coplanar; ++k) coplanar = orientation(hull[0], hull[1], hull[2], other[k]) == 0;
+      if(coplanar && coplanar_interiors_meet(hull, other)) return true;
+    }
+  }
+  return false;
 }
 
 // The tetrahedra of TetGen's mesh of the region's convex hull that lie
@@ -951,7 +998,8 @@ struct Component_recovery
 // Component c by TetGen: hull facets left out first (the convex hull of the
 // component's points meshed, then carved); then, should TetGen split a wall
 // that way, as constraints too, TetGen removing what lies outside them: on
-// couplingdown's one failing component this second try holds.  False when
+// couplingdown's one failing component this second try holds.  The second
+// try is skipped when a hull facet crosses another triangle.  False when
 // neither fits.  `local` as for local_problem.
 inline bool recover_component_with_tetgen(const Flat_storage& m, const Recovery_region& region, std::size_t c,
                                           const std::vector<Triangle_key>& input,
@@ -960,6 +1008,7 @@ inline bool recover_component_with_tetgen(const Flat_storage& m, const Recovery_
 {
   for(bool with_hull_facets : {false, true}) {
     out.problem = local_problem(m, region, c, input, missing_here, local, with_hull_facets);
+    if(with_hull_facets && hull_facet_crosses_a_triangle(out.problem)) break;
     try {
       out.mesh = tetgen_recovery(out.problem.points, out.problem.triangles, with_hull_facets ? "pYMO0zQ" : "pYcMO0zQ");
     } catch(const std::runtime_error&) {
