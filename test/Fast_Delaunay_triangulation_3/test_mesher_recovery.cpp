@@ -251,7 +251,7 @@ TEST(BoundaryRecovery, CoplanarInteriorsMeet)
 // fandisk's components with their hull facets as constraints (the local
 // recovery's second try): some have a hull facet crossed by an input
 // triangle of a flat face, which the recovery never gives TetGen (it
-// crashed the process on them); TetGen meshes every other one.
+// crashed the process on them); TetGen runs on every other one.
 TEST(BoundaryRecovery, CgalDataFandiskNoCrossedHullFacetForTetgen)
 {
   Surface s;

@@ -702,8 +702,8 @@ TEST(Coplanar_side_of_bounded_circle, SignOfCgalsExactPredicate)
       }
     }
   // Four points of a circle in the plane z = x, rounded (then z set to x
-  // again: exactly coplanar), nearly cocircular: the floating-point stage
-  // must leave most of them to the exact one.
+  // again: exactly coplanar), nearly cocircular: the rounding of the
+  // floating-point stage can flip their sign.
   std::size_t near_circle = 0;
   for(double scale : {1.0, 1e-30, 1e30}) {
     for(int i = 0; i < 3000; ++i) {

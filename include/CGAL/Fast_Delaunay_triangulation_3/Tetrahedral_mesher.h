@@ -121,7 +121,7 @@ struct Mesher_statistics
   bool used_tetgen = false;
   std::size_t recovery_region_tetrahedra = 0; // empty-mesh tetrahedra re-meshed by the local recovery
   std::size_t flipped_components = 0;          // parts of that region recovered by our flips
-  std::size_t tetgen_components = 0;           // and by TetGen
+  std::size_t tetgen_components = 0;           // and by TetGen (both 0 when TetGen took everything)
   bool whole_surface_to_tetgen = false;        // the local recovery failed, TetGen took everything
   std::size_t steiner_points = 0;    // added by the recovery, inside the volumes
   int refinement_passes = 0;

@@ -816,14 +816,20 @@ inline int perturbed_tie_break(const double* p0, const double* p1, const double*
 // is |n| times the in-circle determinant of p, q, r, t in an orthonormal
 // frame of the plane in which p, q, r turn counterclockwise (each cross
 // product of two vectors of the plane is its 2D determinant times the unit
-// normal), so S has the sign of the answer.  Evaluated with at most 10
-// roundings on any path, S is off by at most gamma_10 = 10 eps (1 + 1e-15)
-// times its permanent (the same sums of absolute values); 16 eps covers
-// that and the rounding of the permanent itself.  On flat faces of a convex
-// hull every ghost conflict test of a point in their plane comes here
-// (fandisk's surface points: CGAL's interval filter was a tenth of their
-// Delaunay triangulation); ties and products that may have underflowed go
-// to CGAL's exact predicate.
+// normal), so S has the sign of the answer.
+// The bound: each monomial of S, as evaluated, carries at most 19 roundings
+// (a coordinate difference, 1, counted twice where squared; a lift, 5; a
+// cross product's entry or the normal's, 4; their products, sums and the
+// final sum, the rest), so S is off by at most gamma_19 = 19 eps (1 + 1e-14)
+// times its permanent (the same with absolute values everywhere); 32 eps
+// covers that and the rounding of the permanent itself.  With every
+// difference 0 or of magnitude in [2^-60, 2^60], no product overflows, and a
+// product underflows only after a cancellation, each then off by at most
+// 2^-1075, times at most 2^121 afterwards: 2^-950 more covers the twelve.
+// Outside that range, and for ties, CGAL's exact predicate decides.  On flat
+// faces of a convex hull every ghost conflict test of a point in their plane
+// comes here (fandisk's surface points: CGAL's interval filter was a tenth of
+// their Delaunay triangulation).
 inline int coplanar_side_of_bounded_circle(const double* p, const double* q, const double* r, const double* t)
 {
   const double P[3] = {p[0] - t[0], p[1] - t[1], p[2] - t[2]};
@@ -831,6 +837,13 @@ inline int coplanar_side_of_bounded_circle(const double* p, const double* q, con
   const double R[3] = {r[0] - t[0], r[1] - t[1], r[2] - t[2]};
   const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
   const double b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+  bool in_range = true;
+  for(const double* d : {P, Q, R, a, b})
+    for(int i = 0; i < 3; ++i) {
+      const double m = std::fabs(d[i]);
+      in_range = in_range && (m == 0 || (m >= 0x1p-60 && m <= 0x1p60));
+    }
+  if(!in_range) return predicates_detail::coplanar_side_of_bounded_circle_exact(p, q, r, t);
   const double lift_p = P[0] * P[0] + P[1] * P[1] + P[2] * P[2];
   const double lift_q = Q[0] * Q[0] + Q[1] * Q[1] + Q[2] * Q[2];
   const double lift_r = R[0] * R[0] + R[1] * R[1] + R[2] * R[2];
@@ -846,8 +859,7 @@ inline int coplanar_side_of_bounded_circle(const double* p, const double* q, con
     sum += normal * (lift_p * qr + lift_q * rp + lift_r * pq);
     permanent += normal_abs * (lift_p * qr_abs + lift_q * rp_abs + lift_r * pq_abs);
   }
-  if(permanent > 1e-270 && permanent < 1e300 && std::fabs(sum) > 16 * Filter_bounds::unit_roundoff * permanent)
-    return sum > 0 ? 1 : -1;
+  if(std::fabs(sum) > 32 * Filter_bounds::unit_roundoff * permanent + 0x1p-950) return sum > 0 ? 1 : -1;
   return predicates_detail::coplanar_side_of_bounded_circle_exact(p, q, r, t);
 }
 

@@ -14,8 +14,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <utility>
+#include <exception>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -58,10 +59,22 @@ void for_each_chunk(int chunks, const Function& f)
 {
 #if defined(__SANITIZE_THREAD__)
   if(chunks > 1) {
+    // An exception must not leave a std::thread (that terminates): each
+    // chunk's is kept, and the first chunk's rethrown after the joins.
+    std::vector<std::exception_ptr> errors(chunks);
+    auto run = [&f, &errors](int c) {
+      try {
+        f(c);
+      } catch(...) {
+        errors[c] = std::current_exception();
+      }
+    };
     std::vector<std::thread> threads;
-    for(int c = 1; c < chunks; ++c) threads.emplace_back([&f, c] { f(c); });
-    f(0);
+    for(int c = 1; c < chunks; ++c) threads.emplace_back(run, c);
+    run(0);
     for(std::thread& t : threads) t.join();
+    for(const std::exception_ptr& e : errors)
+      if(e) std::rethrow_exception(e);
     return;
   }
 #elif defined(CGAL_LINKED_WITH_TBB)

@@ -63,7 +63,9 @@ struct Recovery_report
   std::size_t missing_triangles = 0;  // input triangles not facets of the empty mesh
   bool used_tetgen = false;
   std::size_t region_tetrahedra = 0;  // empty-mesh tetrahedra re-meshed by the local recovery
-  std::size_t flipped_components = 0;  // region components recovered by one flip of ours
+  // The local recovery's components, counted when it succeeds (0 when
+  // TetGen re-meshed the whole surface instead).
+  std::size_t flipped_components = 0;  // region components recovered by flips of ours
   std::size_t tetgen_components = 0;   // region components recovered by TetGen
   bool whole_surface_to_tetgen = false; // the local recovery failed: TetGen re-meshed everything
   std::size_t steiner_points = 0;     // added by TetGen inside the volumes
