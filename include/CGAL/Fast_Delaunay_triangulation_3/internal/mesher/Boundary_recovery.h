@@ -48,7 +48,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <exception>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -95,7 +94,7 @@ inline std::vector<Triangle_key> missing_facets(const Flat_storage& m, const std
                                                 int threads = 1)
 {
   const Triangles_by_smallest_vertex lookup(wanted, m.vertices.size());
-  const std::vector<char> found = listed_facets(m, lookup, wanted.size(), threads, [](Tet_id, int) {});
+  const std::vector<char> found = listed_facets(m, lookup, threads, [](Tet_id, int) {});
   std::vector<Triangle_key> missing;
   for(std::size_t i = 0; i < wanted.size(); ++i)
     if(!found[i]) missing.push_back(wanted[i]);
@@ -905,8 +904,8 @@ inline bool recover_by_flips(const Flat_storage& m, const Recovery_region& regio
                              const std::vector<Triangle_key>& input, const std::vector<Triangle_key>& missing_here,
                              std::vector<std::array<Vertex_id, 4>>& tets)
 {
+  if(component_size(region, c) > max_flipped_component) return false;
   const std::size_t begin = region.component_begin[c], end = region.component_begin[c + 1];
-  if(end - begin > max_flipped_component) return false;
   Small_component component;
   std::vector<Triangle_key> wanted = missing_here;
   for(std::size_t k = begin; k < end; ++k) {
@@ -1022,28 +1021,20 @@ inline bool recover_component_with_tetgen(const Flat_storage& m, const Recovery_
   return false;
 }
 
-// Calls a() and b(), side by side on two threads when `parallel`; an
-// exception from either is rethrown once both have returned.
+// Calls a() and b(), side by side on two threads when `parallel`
+// (for_each_chunk rethrows an exception of either once both have returned).
 template <class A, class B>
 void run_side_by_side(bool parallel, const A& a, const B& b)
 {
-  std::exception_ptr error[2];
-  auto guarded = [&](int k) {
-    try {
-      if(k == 0) a();
-      else b();
-    } catch(...) {
-      error[k] = std::current_exception();
-    }
-  };
-  if(parallel) {
-    for_each_chunk(2, guarded);
-  } else {
-    guarded(0);
-    guarded(1);
+  if(!parallel) {
+    a();
+    b();
+    return;
   }
-  for(const std::exception_ptr& e : error)
-    if(e) std::rethrow_exception(e);
+  for_each_chunk(2, [&](int k) {
+    if(k == 0) a();
+    else b();
+  });
 }
 
 // RECOVERBOUNDARY of the region only, component by component, in place;

@@ -79,6 +79,8 @@ public:
     for(std::size_t i = 0; i < keys.size(); ++i) index_[next[keys[i].v[0]]++] = i;
   }
 
+  std::size_t size() const { return keys_.size(); }
+
   // The position of k in the list (the first one if listed twice), or none.
   std::size_t find(const Triangle_key& k) const
   {
@@ -99,15 +101,15 @@ private:
 };
 
 // Which listed triangles are facets of m's live tetrahedra: found[i] for
-// triangle i of `lookup` (`listed` of them).  `on_facet(t, f)` sees every
+// triangle i of `lookup`.  `on_facet(t, f)` sees every
 // facet f of tetrahedron t that is listed (a ghost's one facet, 3,
 // included).  The slots are cut into one run per thread: `on_facet` may
 // run concurrently, never twice at once for the same t.
 template <class On_facet>
-std::vector<char> listed_facets(const Flat_storage& m, const Triangles_by_smallest_vertex& lookup, std::size_t listed,
-                                int threads, const On_facet& on_facet)
+std::vector<char> listed_facets(const Flat_storage& m, const Triangles_by_smallest_vertex& lookup, int threads,
+                                const On_facet& on_facet)
 {
-  const std::size_t slots = m.number_of_slots();
+  const std::size_t slots = m.number_of_slots(), listed = lookup.size();
   const int chunks = chunk_count(slots, threads);
   // Two runs may find the same triangle (its two sides): each has its own flags.
   std::vector<std::vector<char>> found(chunks, std::vector<char>(listed, 0));

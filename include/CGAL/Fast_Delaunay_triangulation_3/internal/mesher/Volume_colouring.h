@@ -29,7 +29,7 @@ inline void flag_constrained_facets(const Surface_soup& soup, Constrained_mesh& 
   const std::vector<Triangle_key> keys = input_triangle_keys(soup, cm.vertex_of_input);
   const Triangles_by_smallest_vertex lookup(keys, cm.mesh.vertices.size());
   std::fill(cm.constrained.begin(), cm.constrained.end(), 0);
-  const std::vector<char> found = listed_facets(cm.mesh, lookup, keys.size(), threads, [&](Tet_id t, int f) {
+  const std::vector<char> found = listed_facets(cm.mesh, lookup, threads, [&](Tet_id t, int f) {
     cm.constrained[t] |= std::uint8_t(1u << f);
   });
   if(std::count(found.begin(), found.end(), 0) != 0)
