@@ -87,6 +87,108 @@ TEST(Quality, DihedralAngles)
   EXPECT_NEAR(r.smallest, std::acos(1 / std::sqrt(3.0)) * 180 / 3.14159265358979323846, 1e-9);
 }
 
+// The ceiling of a triangle bounds the gamma of every tetrahedron on it,
+// and is close to the best one: apexes on a grid above random triangles,
+// half of them skinny (a corner near the opposite edge), never pass it, and
+// under a skinny triangle the best of them comes within 12% of it.
+TEST(Quality, GammaCeilingOnTriangleBoundsEveryApex)
+{
+  const double s3 = std::sqrt(3.0);
+  const std::array<double, 3> equilateral[3] = {{0, 0, 0}, {1, 0, 0}, {0.5, s3 / 2, 0}};
+  EXPECT_NEAR(mi::gamma_ceiling_on_triangle(equilateral[0].data(), equilateral[1].data(), equilateral[2].data()),
+              1.2, 1e-12);
+  const std::array<double, 3> flat[3] = {{0, 0, 0}, {1, 0, 0}, {3, 0, 0}};
+  EXPECT_EQ(mi::gamma_ceiling_on_triangle(flat[0].data(), flat[1].data(), flat[2].data()), 0.0);
+
+  CGAL::Random random(11);
+  int skinny = 0;
+  for(int k = 0; k < 40; ++k) {
+    std::array<std::array<double, 3>, 3> tri;
+    for(auto& p : tri)
+      for(double& x : p) x = random.get_double(-1, 1);
+    if(k % 2 == 1) { // c near the segment ab
+      const double along = random.get_double(0.1, 0.9);
+      for(int a = 0; a < 3; ++a)
+        tri[2][a] = tri[0][a] + along * (tri[1][a] - tri[0][a]) + random.get_double(-0.05, 0.05);
+    }
+    const double ceiling = mi::gamma_ceiling_on_triangle(tri[0].data(), tri[1].data(), tri[2].data());
+    // A frame of the triangle's plane and its size.
+    double e1[3], e2[3], n[3], centroid[3], longest = 0;
+    for(int a = 0; a < 3; ++a) {
+      e1[a] = tri[1][a] - tri[0][a];
+      e2[a] = tri[2][a] - tri[0][a];
+      centroid[a] = (tri[0][a] + tri[1][a] + tri[2][a]) / 3;
+    }
+    mi::quality_detail::cross(e1, e2, n);
+    const double ln = mi::quality_detail::norm(n), l1 = mi::quality_detail::norm(e1);
+    for(int a = 0; a < 3; ++a) {
+      n[a] /= ln;
+      e1[a] /= l1;
+    }
+    mi::quality_detail::cross(n, e1, e2);
+    for(int i = 0; i < 3; ++i) longest = std::max(longest, mi::distance(tri[i].data(), tri[(i + 1) % 3].data()));
+    double best = 0;
+    for(int i = -14; i <= 14; ++i)
+      for(int j = -14; j <= 14; ++j)
+        for(int l = 0; l < 40; ++l) {
+          const double x = 0.05 * i * longest, y = 0.05 * j * longest;
+          const double h = 0.005 * std::pow(300.0, l / 39.0) * longest; // 0.005 to 1.5 times the longest edge
+          std::array<std::array<double, 3>, 4> w = {tri[0], tri[1], tri[2], {}};
+          for(int a = 0; a < 3; ++a) w[3][a] = centroid[a] + x * e1[a] + y * e2[a] + h * n[a];
+          const double g = std::abs(gamma_of(w));
+          ASSERT_LE(g, ceiling * (1 + 1e-12)) << k << " " << i << " " << j << " " << l;
+          best = std::max(best, g);
+        }
+    if(ceiling < 0.3) {
+      ++skinny;
+      EXPECT_GE(best, 0.88 * ceiling) << k;
+    }
+  }
+  EXPECT_GE(skinny, 10);
+}
+
+// The quality report counts as forced the tetrahedra on an input triangle
+// that no tetrahedron of gamma 0.3 fits, and only those.
+TEST(Quality, ReportCountsTetrahedraForcedByTheirInputTriangle)
+{
+  using namespace CGAL::Fast_mesher_3;
+  // Two tetrahedra on the skinny triangle (0, 1, 2), one on each side: a
+  // closed surface of six triangles around a double pyramid.
+  Tetrahedral_mesh mesh;
+  mesh.points = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.02, 0}, {0.5, 0.2, 0.6}, {0.5, 0.2, -0.6}};
+  mesh.size.assign(mesh.points.size(), 0.5);
+  mesh.tetrahedra = {{0, 1, 2, 3}, {1, 0, 2, 4}};
+  for(const auto& t : mesh.tetrahedra) {
+    const double* w[4] = {mesh.points[t[0]].data(), mesh.points[t[1]].data(), mesh.points[t[2]].data(),
+                          mesh.points[t[3]].data()};
+    ASSERT_GT(fdt::orientation(w[0], w[1], w[2], w[3]), 0);
+  }
+  mesh.subdomain = {1, 1};
+  mesh.number_of_subdomains = 1;
+  mesh.triangles = {{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {1, 0, 4}, {2, 1, 4}, {0, 2, 4}};
+  mesh.surface.assign(mesh.triangles.size(), 1);
+  mesh.number_of_surfaces = 1;
+  Quality_report q = quality_report(mesh);
+  ASSERT_TRUE(q.boundary_equals_input());
+  EXPECT_EQ(q.input_triangles_forcing_gamma_0_3, 0u); // the skinny one is inside
+  EXPECT_EQ(q.tetrahedra_forced_below_gamma_0_3, 0u);
+  EXPECT_EQ(q.tetrahedra_below_gamma_0_3, 2u);
+  EXPECT_EQ(q.tetrahedra_below_gamma_0_3_not_forced(), 2u);
+
+  // Two subdomains: the skinny triangle becomes their interface, an input
+  // triangle that forces both tetrahedra.
+  mesh.subdomain = {1, 2};
+  mesh.number_of_subdomains = 2;
+  mesh.triangles.push_back({0, 1, 2});
+  mesh.surface.push_back(2);
+  mesh.number_of_surfaces = 2;
+  q = quality_report(mesh);
+  ASSERT_TRUE(q.boundary_equals_input());
+  EXPECT_EQ(q.input_triangles_forcing_gamma_0_3, 1u);
+  EXPECT_EQ(q.tetrahedra_forced_below_gamma_0_3, 2u);
+  EXPECT_EQ(q.tetrahedra_below_gamma_0_3_not_forced(), 0u);
+}
+
 // The ring of n tetrahedra (a, b, p_i, p_i+1) around the edge a = (0, 0, h),
 // b = (0, 0, -h) with p on the unit circle, clockwise seen from a (which
 // makes them positive): for h = 2 every one is a needle (gamma < 0.33) and
@@ -367,6 +469,35 @@ TEST(Improvement, MesherOptimizesByDefault)
 }
 
 // CGAL's elephant, meshed with the improvement on 1 thread.  Most of the
+// CGAL's joint: 303 of its 446 triangles admit no tetrahedron of gamma 0.3.
+// The improvement's statistics and the quality report count the same
+// forced tetrahedra, each forcing triangle has one, and there are more bad
+// tetrahedra than forced ones.
+TEST(Improvement, ForcedTetrahedraOnCgalDataJoint)
+{
+  mesher_shapes::Surface s;
+  if(!mesher_shapes::read_cgal_data_surface("joint.off", s))
+    GTEST_SKIP() << FDT3_CGAL_DATA_DIR "/joint.off is missing (apt install libcgal-demo, re-run CMake)";
+  using namespace CGAL::Fast_mesher_3;
+  std::size_t forcing = 0;
+  for(const auto& t : s.triangles)
+    forcing += mi::gamma_ceiling_on_triangle(s.points[t[0]].data(), s.points[t[1]].data(), s.points[t[2]].data()) <
+                       0.3 ? 1 : 0;
+  EXPECT_EQ(forcing, 303u);
+  Mesher_statistics stats;
+  const Tetrahedral_mesh mesh = mesh_surfaces(s.points, s.triangles, Mesher_options(), &stats);
+  const Quality_report q = quality_report(mesh);
+  ASSERT_TRUE(q.boundary_equals_input());
+  EXPECT_EQ(q.input_triangles_forcing_gamma_0_3, forcing);
+  EXPECT_EQ(stats.improvement.bad_after, q.tetrahedra_below_gamma_0_3);
+  EXPECT_EQ(stats.improvement.bad_after_forced_by_surface, q.tetrahedra_forced_below_gamma_0_3);
+  // One volume: each forcing triangle is a facet of exactly one
+  // tetrahedron, which has at most four of them.
+  EXPECT_GE(4 * q.tetrahedra_forced_below_gamma_0_3, forcing);
+  EXPECT_LE(q.tetrahedra_forced_below_gamma_0_3, forcing);
+  EXPECT_LT(q.tetrahedra_forced_below_gamma_0_3, q.tetrahedra_below_gamma_0_3);
+}
+
 // tetrahedra it leaves bad have four surface vertices, many wedged under two
 // surface triangles at a nearly flat edge; its only interior edge and
 // facets lie near the surface, so a split of them gains nothing, and the

@@ -150,8 +150,9 @@ int main(int argc, char** argv)
                   << " deferred between partitions)\n"
                   << "  tetrahedra under gamma " << options.quality_threshold << ": " << im.bad_before << " before, "
                   << im.bad_after << " after (" << im.bad_after_on_surface
-                  << " with all four vertices on the surface, " << im.bad_after_forced_by_surface
-                  << " of them on a skinny input triangle); min gamma " << im.min_gamma_before << " -> "
+                  << " with all four vertices on the surface; " << im.bad_after_forced_by_surface
+                  << " forced: on an input triangle under which no tetrahedron reaches "
+                  << options.quality_threshold << "); min gamma " << im.min_gamma_before << " -> "
                   << im.min_gamma_after << "\n"
                   << "  smallest dihedral angle " << im.min_dihedral_before << " -> " << im.min_dihedral_after
                   << " degrees; tetrahedra under 10 degrees " << im.below_10_degrees_before << " -> "

@@ -104,9 +104,9 @@ struct Improvement_statistics
   // Of the bad tetrahedra left, those whose four vertices are on the
   // surface: relocation cannot touch them and only a Steiner point could.
   std::size_t bad_after_on_surface = 0;
-  // Of those, the ones on an input triangle so skinny that even the apex
-  // that makes it a regular tetrahedron gives gamma under the threshold:
-  // the surface itself forces them.
+  // Of the bad tetrahedra left (wherever their vertices are), those on an
+  // input triangle under which no tetrahedron reaches the threshold
+  // (gamma_ceiling_on_triangle, a proven bound): the surface forces them.
   std::size_t bad_after_forced_by_surface = 0;
   std::size_t edge_removals = 0, face_removals = 0, relocations = 0;
   std::size_t steiner_points = 0; // interior vertices added by edge or facet splits or in a cavity
@@ -173,9 +173,9 @@ public:
     for(const Bad_tet& b : bad) {
       if(gamma_of(b.t) >= options_.quality_threshold) continue;
       const Vertex_id* tv = cm_.mesh.vertex_ids(b.t);
-      if(!(on_surface_[tv[0]] && on_surface_[tv[1]] && on_surface_[tv[2]] && on_surface_[tv[3]])) continue;
-      ++stats.bad_after_on_surface;
-      stats.bad_after_forced_by_surface += on_skinny_input_triangle(b.t) ? 1 : 0;
+      stats.bad_after_on_surface +=
+          on_surface_[tv[0]] && on_surface_[tv[1]] && on_surface_[tv[2]] && on_surface_[tv[3]] ? 1 : 0;
+      stats.bad_after_forced_by_surface += on_forcing_input_triangle(b.t) ? 1 : 0;
     }
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return stats;
@@ -419,11 +419,18 @@ private:
     });
   }
 
-  bool on_skinny_input_triangle(Tet_id t) const
+  // t stands on an input triangle under which no tetrahedron reaches the
+  // threshold's gamma.
+  bool on_forcing_input_triangle(Tet_id t) const
   {
-    return input_triangle_ceiling(t, [](const double* a, const double* b, const double* c, const double* d) {
-             return gamma_quality(a, b, c, d);
-           }) < options_.quality_threshold;
+    const Flat_storage& m = cm_.mesh;
+    const Vertex_id* tv = m.vertex_ids(t);
+    for(int f = 0; f < 4; ++f)
+      if(cm_.is_constrained(t, f) &&
+         gamma_ceiling_on_triangle(m.point(tv[facet_vertex[f][0]]), m.point(tv[facet_vertex[f][1]]),
+                                   m.point(tv[facet_vertex[f][2]])) < options_.quality_threshold)
+        return true;
+    return false;
   }
 
   // ------------------------------------------------------------ partitions

@@ -6,7 +6,9 @@
 // Tetrahedron_quality.h as minimum, 1st percentile, mean and histogram
 // (gamma = 3 r_in / r_circ, and the smallest dihedral angle of each
 // tetrahedron), the extreme dihedral angles and the number of tetrahedra
-// under gamma 0.3 and under 10 degrees; a histogram of the radius-edge ratio
+// under gamma 0.3 and under 10 degrees, and of those under gamma 0.3 the
+// ones the input surface forces (on an input triangle under which no
+// tetrahedron reaches 0.3, gamma_ceiling_on_triangle); a histogram of the radius-edge ratio
 // (circumradius / shortest edge; 0.612 for the regular tetrahedron); edge
 // lengths relative to the target size h; the number of tetrahedra that are
 // not positively oriented (exact test) and whether the mesh boundary is
@@ -48,6 +50,17 @@ struct Quality_report
   double min_gamma = 1, gamma_1st_percentile = 0, mean_gamma = 0;
   std::vector<std::size_t> gamma_histogram;
   std::size_t tetrahedra_below_gamma_0_3 = 0;
+  // Input triangles under which no tetrahedron reaches gamma 0.3 (a proven
+  // bound, whatever the fourth corner), and the tetrahedra standing on one:
+  // all of them are under 0.3, and no mesh that keeps the boundary avoids
+  // them.  Only tetrahedra whose facet is the input triangle count, so a
+  // mesh that remeshes the surface has none.
+  std::size_t input_triangles_forcing_gamma_0_3 = 0;
+  std::size_t tetrahedra_forced_below_gamma_0_3 = 0;
+  std::size_t tetrahedra_below_gamma_0_3_not_forced() const
+  {
+    return tetrahedra_below_gamma_0_3 - tetrahedra_forced_below_gamma_0_3;
+  }
   // Radius-edge ratio histogram: bins [0.6,0.7), [0.7,0.8), ... [2.0,inf).
   std::vector<double> radius_edge_bin_lower;
   std::vector<std::size_t> radius_edge_histogram;
@@ -96,6 +109,19 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   gammas.reserve(mesh.tetrahedra.size());
   smallest_angles.reserve(mesh.tetrahedra.size());
 
+  std::vector<std::array<std::uint32_t, 3>> input, forcing;
+  for(auto t : mesh.triangles) {
+    const double ceiling = gamma_ceiling_on_triangle(mesh.points[t[0]].data(), mesh.points[t[1]].data(),
+                                                     mesh.points[t[2]].data());
+    std::sort(t.begin(), t.end());
+    input.push_back(t);
+    if(ceiling < 0.3) forcing.push_back(t);
+  }
+  std::sort(input.begin(), input.end());
+  std::sort(forcing.begin(), forcing.end());
+  forcing.erase(std::unique(forcing.begin(), forcing.end()), forcing.end());
+  q.input_triangles_forcing_gamma_0_3 = forcing.size();
+
   std::map<std::pair<std::uint32_t, std::uint32_t>, double> edges;
   std::map<std::array<std::uint32_t, 3>, std::vector<int>> facet_sides;
   for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
@@ -131,13 +157,18 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
       while(bin + 1 < q.radius_edge_bin_lower.size() && ratio >= q.radius_edge_bin_lower[bin + 1]) ++bin;
       ++q.radius_edge_histogram[bin];
     }
+    bool forced = false;
     for(int f = 0; f < 4; ++f) {
       std::array<std::uint32_t, 3> key;
       for(int i = 0, k = 0; i < 4; ++i)
         if(i != f) key[k++] = tv[i];
       std::sort(key.begin(), key.end());
       facet_sides[key].push_back(s);
+      forced = forced || std::binary_search(forcing.begin(), forcing.end(), key);
     }
+    // (The bound makes every forced gamma smaller; the test keeps the count
+    // a part of the one under 0.3 whatever the roundings.)
+    q.tetrahedra_forced_below_gamma_0_3 += forced && gamma < 0.3 ? 1 : 0;
   }
 
   if(!gammas.empty()) q.min_gamma = *std::min_element(gammas.begin(), gammas.end());
@@ -157,12 +188,6 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   }
   if(q.edges != 0) q.mean_edge_over_h = sum / q.edges;
 
-  std::vector<std::array<std::uint32_t, 3>> input;
-  for(auto t : mesh.triangles) {
-    std::sort(t.begin(), t.end());
-    input.push_back(t);
-  }
-  std::sort(input.begin(), input.end());
   for(const auto& entry : facet_sides) {
     const std::vector<int>& sides = entry.second;
     const bool boundary = sides.size() == 1 || (sides.size() == 2 && sides[0] != sides[1]);
@@ -188,7 +213,11 @@ inline void print_quality_report(std::ostream& out, const CGAL::Fast_mesher_3::Q
     out << "  [" << b * q.min_dihedral_bin_degrees << ", " << (b + 1) * q.min_dihedral_bin_degrees << ") "
         << q.min_dihedral_histogram[b] << "\n";
   out << "gamma = 3 r_in / r_circ: min " << q.min_gamma << ", 1st percentile " << q.gamma_1st_percentile
-      << ", mean " << q.mean_gamma << "; " << q.tetrahedra_below_gamma_0_3 << " tetrahedra under 0.3\n";
+      << ", mean " << q.mean_gamma << "; " << q.tetrahedra_below_gamma_0_3 << " tetrahedra under 0.3";
+  if(q.input_triangles_forcing_gamma_0_3 != 0)
+    out << " (" << q.tetrahedra_forced_below_gamma_0_3 << " of them forced: on one of the "
+        << q.input_triangles_forcing_gamma_0_3 << " input triangles under which no tetrahedron reaches 0.3)";
+  out << "\n";
   for(std::size_t b = 0; b < q.gamma_histogram.size(); ++b)
     out << "  [" << b / 10.0 << ", " << (b + 1) / 10.0 << (b + 1 == q.gamma_histogram.size() ? "] " : ") ")
         << q.gamma_histogram[b] << "\n";

@@ -104,6 +104,35 @@ inline double gamma_quality(const double* a, const double* b, const double* c, c
   return 6 * D * std::abs(D) / denominator;
 }
 
+// An upper bound on the gamma of every tetrahedron that has (a, b, c) as a
+// facet, wherever its fourth corner is: a surface triangle under which no
+// tetrahedron reaches a threshold forces a bad one on whoever keeps it.
+// With the triangle's area A, circumradius R and perimeter P, and the apex
+// at height h above its plane: the volume is A h / 3 and each other facet
+// has an area of at least its edge times h / 2, so r_in = 3 V / area is at
+// most A h / (A + h P / 2); the circumscribed sphere meets the plane in the
+// triangle's circumcircle and holds two points h apart, so r_circ is at
+// least max(R, h / 2).  The quotient 3 r_in / r_circ is largest at
+// h = 2 R, where it is 6 A / (A + R P); with R = l1 l2 l3 / (4 A) and
+// n = (b - a) x (c - a), |n| = 2 A, that is 6 |n|^2 / (|n|^2 + l1 l2 l3 P).
+// 1.2 for the equilateral triangle; about 1.5 times the radius ratio
+// 2 r / R for a skinny one; 0 for a degenerate one.
+inline double gamma_ceiling_on_triangle(const double* a, const double* b, const double* c)
+{
+  using namespace quality_detail;
+  double u[3], v[3], w[3], n[3];
+  for(int i = 0; i < 3; ++i) {
+    u[i] = b[i] - a[i];
+    v[i] = c[i] - a[i];
+    w[i] = c[i] - b[i];
+  }
+  cross(u, v, n);
+  const double nn = dot(n, n);
+  const double lu = norm(u), lv = norm(v), lw = norm(w);
+  const double denominator = nn + lu * lv * lw * (lu + lv + lw);
+  return denominator > 0 ? 6 * nn / denominator : 0;
+}
+
 // The cosine of the angle at edge (a, b) between facets (a, b, c) and
 // (a, b, d); 1 (a zero angle) for a degenerate facet.
 inline double dihedral_cosine(const double* a, const double* b, const double* c, const double* d)
