@@ -39,6 +39,54 @@ std::array<std::size_t, 2> tetrahedra_by_side(const Tetrahedral_mesh& mesh)
   return n;
 }
 
+// The Steiner points' nearest surface vertex: the k-d tree's answer is the
+// scan's, ties (points halfway between two, at a grid cell's centre, on a
+// vertex) included, and the scan takes the first in index order.
+TEST(SizeField, NearestInputPointByTreeAsByScan)
+{
+  namespace fdt = CGAL::Fast_Delaunay_triangulation_3_internal;
+  std::vector<std::array<double, 3>> points;
+  for(int i = 0; i < 6; ++i)
+    for(int j = 0; j < 6; ++j)
+      for(int k = 0; k < 6; ++k) points.push_back({0.25 * i, 0.25 * j, 0.25 * k});
+  CGAL::Random random(5);
+  for(int i = 0; i < 300; ++i) // away from the grid, whose ties the first queries test
+    points.push_back({random.get_double(2, 3), random.get_double(2, 3), random.get_double(2, 3)});
+  for(std::size_t i = 0; i < 216; i += 7) points.push_back(points[i]); // duplicates: the first copy wins
+
+  fdt::Flat_storage m;
+  std::vector<fdt::Vertex_id> queries;
+  auto add_query = [&](double x, double y, double z) {
+    fdt::Vertex_record record = {{x, y, z}, 0};
+    m.vertices.push_back(record);
+    queries.push_back(static_cast<fdt::Vertex_id>(m.vertices.size() - 1));
+  };
+  add_query(0.125, 0.5, 0.5);    // halfway between two grid points
+  add_query(0.125, 0.125, 0.125); // the centre of a grid cell: eight at once
+  add_query(0.25, 0.5, 0.25);    // on a grid point
+  for(std::size_t i = 0; i < 216; i += 7) add_query(points[i][0], points[i][1], points[i][2]);
+  for(int i = 0; i < 500; ++i)
+    add_query(random.get_double(-0.5, 3.5), random.get_double(-0.5, 3.5), random.get_double(-0.5, 3.5));
+
+  const std::vector<std::size_t> scan = fdt::mesher::nearest_input_points(points, m, queries, 0);
+  const std::vector<std::size_t> tree = fdt::mesher::nearest_input_points(points, m, queries, 1);
+  EXPECT_EQ(tree, scan);
+  // Halfway between (0, 0.5, 0.5) and (0.25, 0.5, 0.5): the first of them.
+  EXPECT_EQ(scan[0], std::size_t(0 * 36 + 2 * 6 + 2));
+  EXPECT_EQ(scan[1], std::size_t(0));
+  EXPECT_EQ(scan[2], std::size_t(1 * 36 + 2 * 6 + 1));
+  for(std::size_t i = 0, q = 3; i < 216; i += 7, ++q) EXPECT_EQ(scan[q], i);
+  // Against a plain minimum.
+  for(std::size_t q = 0; q < queries.size(); ++q) {
+    double least = std::numeric_limits<double>::infinity();
+    for(const auto& p : points) least = std::min(least, fdt::mesher::distance(m.point(queries[q]), p.data()));
+    EXPECT_EQ(fdt::mesher::distance(m.point(queries[q]), points[scan[q]].data()), least) << q;
+  }
+  // Nothing to search among, or nothing to search for.
+  EXPECT_TRUE(fdt::mesher::nearest_input_points(points, m, {}).empty());
+  EXPECT_EQ(fdt::mesher::nearest_input_points({}, m, queries).size(), queries.size());
+}
+
 TEST(SizeField, FunctionRefinesWhereItIsBelowTheSurfaceSize)
 {
   const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 40, 16);

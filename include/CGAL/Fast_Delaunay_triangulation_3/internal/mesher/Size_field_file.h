@@ -16,13 +16,7 @@
 #ifndef CGAL_FDT3_INTERNAL_MESHER_SIZE_FIELD_FILE_H
 #define CGAL_FDT3_INTERNAL_MESHER_SIZE_FIELD_FILE_H
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/property_map.h>
-
-#include <boost/tuple/tuple.hpp>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Nearest_point.h>
 
 #include <array>
 #include <cerrno>
@@ -106,32 +100,19 @@ inline Size_field_entries read_size_field_entries(const std::string& path)
 // h(x, y, z) = the size of the nearest background point.
 class Nearest_point_size
 {
-  typedef Simple_cartesian<double> K;
-  typedef boost::tuple<K::Point_3, std::size_t> Point_and_index;
-  typedef Search_traits_adapter<Point_and_index, Nth_of_tuple_property_map<0, Point_and_index>, Search_traits_3<K>>
-      Traits;
-  typedef Orthogonal_k_neighbor_search<Traits> Search;
-  typedef Search::Tree Tree;
-
 public:
   Nearest_point_size(const std::vector<std::array<double, 3>>& points, std::vector<double> sizes)
-      : sizes_(std::move(sizes))
-  {
-    std::vector<Point_and_index> items;
-    for(std::size_t i = 0; i < points.size(); ++i)
-      items.push_back(boost::make_tuple(K::Point_3(points[i][0], points[i][1], points[i][2]), i));
-    tree_ = std::make_shared<Tree>(items.begin(), items.end());
-    tree_->build(); // searches alone from here on: safe from several threads
-  }
+      : index_(std::make_shared<Nearest_point_index>(points)), sizes_(std::move(sizes))
+  {}
 
   double operator()(double x, double y, double z) const
   {
-    Search search(*tree_, K::Point_3(x, y, z), 1);
-    return sizes_[boost::get<1>(search.begin()->first)];
+    const double q[3] = {x, y, z};
+    return sizes_[index_->nearest(q)];
   }
 
 private:
-  std::shared_ptr<Tree> tree_;
+  std::shared_ptr<const Nearest_point_index> index_;
   std::vector<double> sizes_;
 };
 

@@ -15,6 +15,7 @@
 #define CGAL_FDT3_INTERNAL_MESHER_SIZING_H
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Constrained_mesh.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Nearest_point.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Surface_input.h>
 
 #include <algorithm>
@@ -29,6 +30,50 @@ namespace mesher {
 inline double distance(const double* p, const double* q)
 {
   return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+}
+
+// For each of `queries` (vertices of m), the index of the nearest of
+// `points`, the first in index order among the equally near ones, as a
+// scan in that order finds it.  The scan costs queries times points
+// distances; past a few million (when the recovery fell back to TetGen on
+// a large surface, which may add thousands of Steiner points) a k-d tree
+// of the points is built instead and asked for the eight nearest to each
+// query, among which the scan's choice is made: the same answer, except
+// where more than eight points are equally near.  `use_tree`: 1 or 0
+// forces one way (tests), -1 chooses.
+inline std::vector<std::size_t> nearest_input_points(const std::vector<std::array<double, 3>>& points,
+                                                     const Flat_storage& m, const std::vector<Vertex_id>& queries,
+                                                     int use_tree = -1)
+{
+  std::vector<std::size_t> nearest(queries.size(), 0);
+  if(points.empty() || queries.empty()) return nearest;
+  const double scan_cost = double(points.size()) * double(queries.size());
+  auto first_nearest = [&](const double* q, const std::size_t* candidates, std::size_t n) {
+    double least = std::numeric_limits<double>::infinity();
+    std::size_t chosen = candidates[0];
+    for(std::size_t c = 0; c < n; ++c) {
+      const double d = distance(q, points[candidates[c]].data());
+      if(d < least || (d == least && candidates[c] < chosen)) {
+        least = d;
+        chosen = candidates[c];
+      }
+    }
+    return chosen;
+  };
+  if(use_tree == 1 || (use_tree < 0 && scan_cost > 4e6)) {
+    const Nearest_point_index index(points);
+    std::vector<std::size_t> candidates;
+    for(std::size_t k = 0; k < queries.size(); ++k) {
+      index.nearest(m.point(queries[k]), 8, candidates);
+      nearest[k] = first_nearest(m.point(queries[k]), candidates.data(), candidates.size());
+    }
+  } else {
+    std::vector<std::size_t> all(points.size());
+    for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    for(std::size_t k = 0; k < queries.size(); ++k)
+      nearest[k] = first_nearest(m.point(queries[k]), all.data(), all.size());
+  }
+  return nearest;
 }
 
 // Fills cm.size for the vertices of the recovered, coloured mesh; its
@@ -50,17 +95,11 @@ inline void surface_sizes(const Surface_soup& soup, Constrained_mesh& cm)
   cm.size.assign(m.vertices.size(), -1.0);
   for(std::size_t i = 0; i < soup.points.size(); ++i)
     cm.size[cm.vertex_of_input[i]] = std::min(maximum_size, sum[i] / count[i]);
-  for(Vertex_id v = 0; v < m.vertices.size(); ++v) {
-    if(cm.size[v] >= 0) continue;
-    double nearest = std::numeric_limits<double>::infinity();
-    for(std::size_t i = 0; i < soup.points.size(); ++i) {
-      const double d = distance(m.point(v), soup.points[i].data());
-      if(d < nearest) {
-        nearest = d;
-        cm.size[v] = cm.size[cm.vertex_of_input[i]];
-      }
-    }
-  }
+  std::vector<Vertex_id> steiner;
+  for(Vertex_id v = 0; v < m.vertices.size(); ++v)
+    if(cm.size[v] < 0) steiner.push_back(v);
+  const std::vector<std::size_t> nearest = nearest_input_points(soup.points, m, steiner);
+  for(std::size_t k = 0; k < steiner.size(); ++k) cm.size[steiner[k]] = cm.size[cm.vertex_of_input[nearest[k]]];
   // The user's function bounds these sizes too; a subdomain's cap does
   // not (a surface vertex is on the side of every subdomain it bounds, and
   // a cap inside one would otherwise refine its neighbours near the
