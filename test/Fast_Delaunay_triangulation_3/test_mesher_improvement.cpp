@@ -187,6 +187,24 @@ TEST(Quality, ReportCountsTetrahedraForcedByTheirInputTriangle)
   EXPECT_EQ(q.input_triangles_forcing_gamma_0_3, 1u);
   EXPECT_EQ(q.tetrahedra_forced_below_gamma_0_3, 2u);
   EXPECT_EQ(q.tetrahedra_below_gamma_0_3_not_forced(), 0u);
+  EXPECT_EQ(q.edges, 9u); // 6 + 6, the shared triangle's 3 counted once
+
+  // One subdomain again: the shared triangle, still listed, is inside
+  // (missing from the boundary); so is a listed triangle that is no facet;
+  // an outer facet left out of the list is an extra boundary facet.
+  mesh.subdomain = {1, 1};
+  mesh.number_of_subdomains = 1;
+  mesh.triangles.push_back({0, 3, 4});
+  mesh.surface.push_back(2);
+  q = quality_report(mesh);
+  EXPECT_EQ(q.missing_input_triangles, 2u);
+  EXPECT_EQ(q.extra_boundary_facets, 0u);
+  mesh.triangles.erase(mesh.triangles.begin());
+  mesh.surface.erase(mesh.surface.begin());
+  q = quality_report(mesh);
+  EXPECT_EQ(q.missing_input_triangles, 2u);
+  EXPECT_EQ(q.extra_boundary_facets, 1u);
+  EXPECT_FALSE(q.boundary_equals_input());
 }
 
 // The ring of n tetrahedra (a, b, p_i, p_i+1) around the edge a = (0, 0, h),
