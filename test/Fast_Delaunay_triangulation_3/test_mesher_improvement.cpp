@@ -205,6 +205,15 @@ TEST(Quality, ReportCountsTetrahedraForcedByTheirInputTriangle)
   EXPECT_EQ(q.missing_input_triangles, 2u);
   EXPECT_EQ(q.extra_boundary_facets, 1u);
   EXPECT_FALSE(q.boundary_equals_input());
+  // A triangle of a point the mesh does not have is missing too; a listed
+  // triangle twice counts twice.
+  mesh.triangles.push_back({1, 2, 99});
+  mesh.triangles.push_back({0, 3, 4});
+  mesh.surface.push_back(2);
+  mesh.surface.push_back(2);
+  q = quality_report(mesh);
+  EXPECT_EQ(q.missing_input_triangles, 4u);
+  EXPECT_EQ(q.extra_boundary_facets, 1u);
 }
 
 // The ring of n tetrahedra (a, b, p_i, p_i+1) around the edge a = (0, 0, h),
@@ -486,7 +495,6 @@ TEST(Improvement, MesherOptimizesByDefault)
   EXPECT_LE(q_on.min_dihedral_1st_percentile, q_on.mean_min_dihedral);
 }
 
-// CGAL's elephant, meshed with the improvement on 1 thread.  Most of the
 // CGAL's joint: 303 of its 446 triangles admit no tetrahedron of gamma 0.3.
 // The improvement's statistics and the quality report count the same
 // forced tetrahedra, each forcing triangle has one, and there are more bad
@@ -516,6 +524,7 @@ TEST(Improvement, ForcedTetrahedraOnCgalDataJoint)
   EXPECT_LT(q.tetrahedra_forced_below_gamma_0_3, q.tetrahedra_below_gamma_0_3);
 }
 
+// CGAL's elephant, meshed with the improvement on 1 thread.  Most of the
 // tetrahedra it leaves bad have four surface vertices, many wedged under two
 // surface triangles at a nearly flat edge; its only interior edge and
 // facets lie near the surface, so a split of them gains nothing, and the

@@ -40,8 +40,9 @@ std::array<std::size_t, 2> tetrahedra_by_side(const Tetrahedral_mesh& mesh)
 }
 
 // The Steiner points' nearest surface vertex: the k-d tree's answer is the
-// scan's, ties (points halfway between two, at a grid cell's centre, on a
-// vertex) included, and the scan takes the first in index order.
+// scan's, ties (points halfway between two, at a grid cell's centre with
+// more equally near points than the tree is first asked for, on a vertex
+// and its copy) included, and the scan takes the first in index order.
 TEST(SizeField, NearestInputPointByTreeAsByScan)
 {
   namespace fdt = CGAL::Fast_Delaunay_triangulation_3_internal;
@@ -62,7 +63,7 @@ TEST(SizeField, NearestInputPointByTreeAsByScan)
     queries.push_back(static_cast<fdt::Vertex_id>(m.vertices.size() - 1));
   };
   add_query(0.125, 0.5, 0.5);    // halfway between two grid points
-  add_query(0.125, 0.125, 0.125); // the centre of a grid cell: eight at once
+  add_query(0.125, 0.125, 0.125); // the centre of a grid cell: its 8 corners and 3 copies, 11 at once
   add_query(0.25, 0.5, 0.25);    // on a grid point
   for(std::size_t i = 0; i < 216; i += 7) add_query(points[i][0], points[i][1], points[i][2]);
   for(int i = 0; i < 500; ++i)
@@ -82,9 +83,40 @@ TEST(SizeField, NearestInputPointByTreeAsByScan)
     for(const auto& p : points) least = std::min(least, fdt::mesher::distance(m.point(queries[q]), p.data()));
     EXPECT_EQ(fdt::mesher::distance(m.point(queries[q]), points[scan[q]].data()), least) << q;
   }
+  // 30 points at distance 5 from the origin, (5, 0, 0) and (3, 4, 0) with
+  // their signs and axes, in a shuffled order among farther ones: the tree
+  // must be asked for more than eight to find the first of them.
+  std::vector<std::array<double, 3>> sphere;
+  for(int axis = 0; axis < 3; ++axis)
+    for(double sign : {-1.0, 1.0}) {
+      std::array<double, 3> p = {0, 0, 0};
+      p[axis] = 5 * sign;
+      sphere.push_back(p);
+      for(int other = 0; other < 3; ++other)
+        if(other != axis)
+          for(double other_sign : {-1.0, 1.0}) {
+            std::array<double, 3> r = {0, 0, 0};
+            r[axis] = 3 * sign;
+            r[other] = 4 * other_sign;
+            sphere.push_back(r);
+          }
+    }
+  ASSERT_EQ(sphere.size(), 30u);
+  for(int i = 0; i < 200; ++i) sphere.push_back({random.get_double(6, 9), random.get_double(6, 9), random.get_double(-9, 9)});
+  for(std::size_t i = sphere.size() - 1; i > 0; --i)
+    std::swap(sphere[i], sphere[static_cast<std::size_t>(random.get_int(0, int(i) + 1))]);
+  std::size_t first_at_5 = 0;
+  while(std::abs(fdt::mesher::distance(sphere[first_at_5].data(), std::array<double, 3>{0, 0, 0}.data()) - 5) > 0)
+    ++first_at_5;
+  fdt::Flat_storage origin;
+  origin.vertices.push_back(fdt::Vertex_record{{0, 0, 0}, 0});
+  EXPECT_EQ(fdt::mesher::nearest_input_points(sphere, origin, {0}, 1), std::vector<std::size_t>{first_at_5});
+  EXPECT_EQ(fdt::mesher::nearest_input_points(sphere, origin, {0}, 0), std::vector<std::size_t>{first_at_5});
+
   // Nothing to search among, or nothing to search for.
   EXPECT_TRUE(fdt::mesher::nearest_input_points(points, m, {}).empty());
-  EXPECT_EQ(fdt::mesher::nearest_input_points({}, m, queries).size(), queries.size());
+  EXPECT_EQ(fdt::mesher::nearest_input_points({}, m, queries),
+            std::vector<std::size_t>(queries.size(), std::size_t(-1)));
 }
 
 TEST(SizeField, FunctionRefinesWhereItIsBelowTheSurfaceSize)

@@ -104,9 +104,11 @@ struct Improvement_statistics
   // Of the bad tetrahedra left, those whose four vertices are on the
   // surface: relocation cannot touch them and only a Steiner point could.
   std::size_t bad_after_on_surface = 0;
-  // Of the bad tetrahedra left (wherever their vertices are), those on an
-  // input triangle under which no tetrahedron reaches the threshold
+  // Of the bad tetrahedra left (wherever their vertices are), those on a
+  // constrained facet under which no tetrahedron reaches the threshold
   // (gamma_ceiling_on_triangle, a proven bound): the surface forces them.
+  // The constrained facets are the input triangles (mesh_surfaces), or
+  // every facet improve_mesh keeps: the boundary and the interfaces.
   std::size_t bad_after_forced_by_surface = 0;
   std::size_t edge_removals = 0, face_removals = 0, relocations = 0;
   std::size_t steiner_points = 0; // interior vertices added by edge or facet splits or in a cavity
@@ -396,7 +398,9 @@ private:
 
   // The lowest `measure` (gamma_quality, or this class's quality) of the
   // tetrahedra that t's input triangles make with their regular apexes (1
-  // without one): about the best any tetrahedron on those triangles can have.
+  // without one): an estimate of the best any tetrahedron on those
+  // triangles can have, from below (gamma_ceiling_on_triangle bounds it
+  // from above).
   template <class Measure>
   double input_triangle_ceiling(Tet_id t, const Measure& measure) const
   {

@@ -134,6 +134,11 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
 
   std::vector<std::array<std::uint32_t, 3>> input, forcing;
   for(auto t : mesh.triangles) {
+    // A triangle of points the mesh does not have is no facet of it.
+    if(std::max({t[0], t[1], t[2]}) >= mesh.points.size()) {
+      ++q.missing_input_triangles;
+      continue;
+    }
     const double ceiling = gamma_ceiling_on_triangle(mesh.points[t[0]].data(), mesh.points[t[1]].data(),
                                                      mesh.points[t[2]].data());
     std::sort(t.begin(), t.end());

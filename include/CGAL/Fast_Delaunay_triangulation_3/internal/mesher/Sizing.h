@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -34,44 +35,56 @@ inline double distance(const double* p, const double* q)
 
 // For each of `queries` (vertices of m), the index of the nearest of
 // `points`, the first in index order among the equally near ones, as a
-// scan in that order finds it.  The scan costs queries times points
-// distances; past a few million (when the recovery fell back to TetGen on
-// a large surface, which may add thousands of Steiner points) a k-d tree
-// of the points is built instead and asked for the eight nearest to each
-// query, among which the scan's choice is made: the same answer, except
-// where more than eight points are equally near.  `use_tree`: 1 or 0
+// scan in that order finds it (with no points, std::size_t(-1)).  The scan
+// costs queries times points distances; past a few million (when the
+// recovery fell back to TetGen on a large surface, which may add thousands
+// of Steiner points) a k-d tree of the points is built instead and asked
+// for the eight nearest to each query, among which the scan's choice is
+// made.  When the farthest of those is within rounding of the nearest
+// (more may tie, and the tree ranks squared distances with its own
+// roundings), it is asked for twice as many, until one is clearly
+// farther or all are in: the answer is the scan's.  `use_tree`: 1 or 0
 // forces one way (tests), -1 chooses.
 inline std::vector<std::size_t> nearest_input_points(const std::vector<std::array<double, 3>>& points,
                                                      const Flat_storage& m, const std::vector<Vertex_id>& queries,
                                                      int use_tree = -1)
 {
-  std::vector<std::size_t> nearest(queries.size(), 0);
+  std::vector<std::size_t> nearest(queries.size(), std::size_t(-1));
   if(points.empty() || queries.empty()) return nearest;
   const double scan_cost = double(points.size()) * double(queries.size());
-  auto first_nearest = [&](const double* q, const std::size_t* candidates, std::size_t n) {
+  // The first nearest of the candidates, and the farthest distance among them.
+  auto first_nearest = [&](const double* q, const std::size_t* candidates, std::size_t n, double& farthest) {
     double least = std::numeric_limits<double>::infinity();
     std::size_t chosen = candidates[0];
+    farthest = 0;
     for(std::size_t c = 0; c < n; ++c) {
       const double d = distance(q, points[candidates[c]].data());
+      farthest = std::max(farthest, d);
       if(d < least || (d == least && candidates[c] < chosen)) {
         least = d;
         chosen = candidates[c];
       }
     }
-    return chosen;
+    return std::make_pair(chosen, least);
   };
+  double farthest;
   if(use_tree == 1 || (use_tree < 0 && scan_cost > 4e6)) {
     const Nearest_point_index index(points);
     std::vector<std::size_t> candidates;
     for(std::size_t k = 0; k < queries.size(); ++k) {
-      index.nearest(m.point(queries[k]), 8, candidates);
-      nearest[k] = first_nearest(m.point(queries[k]), candidates.data(), candidates.size());
+      const double* q = m.point(queries[k]);
+      for(std::size_t wanted = 8;; wanted *= 2) {
+        index.nearest(q, wanted, candidates);
+        const auto found = first_nearest(q, candidates.data(), candidates.size(), farthest);
+        nearest[k] = found.first;
+        if(candidates.size() < wanted || farthest > found.second * (1 + 1e-12)) break;
+      }
     }
   } else {
     std::vector<std::size_t> all(points.size());
     for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
     for(std::size_t k = 0; k < queries.size(); ++k)
-      nearest[k] = first_nearest(m.point(queries[k]), all.data(), all.size());
+      nearest[k] = first_nearest(m.point(queries[k]), all.data(), all.size(), farthest).first;
   }
   return nearest;
 }

@@ -111,9 +111,9 @@ inline double gamma_quality(const double* a, const double* b, const double* c, c
 // at height h above its plane: the volume is A h / 3 and each other facet
 // has an area of at least its edge times h / 2, so r_in = 3 V / area is at
 // most A h / (A + h P / 2); the circumscribed sphere meets the plane in the
-// triangle's circumcircle and holds two points h apart, so r_circ is at
-// least max(R, h / 2).  The quotient 3 r_in / r_circ is largest at
-// h = 2 R, where it is 6 A / (A + R P); with R = l1 l2 l3 / (4 A) and
+// triangle's circumcircle and holds two points at least h apart, so r_circ
+// is at least max(R, h / 2).  The bound on 3 r_in / r_circ these give is
+// largest at h = 2 R, where it is 6 A / (A + R P); with R = l1 l2 l3 / (4 A) and
 // n = (b - a) x (c - a), |n| = 2 A, that is 6 |n|^2 / (|n|^2 + l1 l2 l3 P).
 // 1.2 for the equilateral triangle; about 1.5 times the radius ratio
 // 2 r / R for a skinny one; 0 for a degenerate one.
