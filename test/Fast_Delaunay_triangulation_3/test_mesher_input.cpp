@@ -136,9 +136,26 @@ TEST(MesherInput, OpenSurface)
 TEST(MesherInput, NonManifoldEdge)
 {
   // Two cubes sharing the edge x = y = 1: four triangles at that edge.
+  Surface shifted = mesher_shapes::cube(0, 1);
+  for(auto& p : shifted.points) {
+    p[0] += 1;
+    p[1] += 1;
+  }
+  const Surface s = mesher_shapes::combine(mesher_shapes::cube(0, 1), shifted);
+  const std::string message = refusal_of(s);
+  EXPECT_TRUE(contains(message, "non-manifold edges")) << message;
+}
+
+TEST(MesherInput, NonManifoldVertex)
+{
+  // Two cubes sharing the corner (1, 1, 1), point 7 of the first, to which
+  // the second's point 0 is merged.
   const Surface s = mesher_shapes::combine(mesher_shapes::cube(0, 1), mesher_shapes::cube(1, 2));
   const std::string message = refusal_of(s);
-  EXPECT_TRUE(contains(message, "non-manifold")) << message;
+  EXPECT_TRUE(contains(message, "non-manifold vertices")) << message;
+  EXPECT_TRUE(contains(message, "#7")) << message;
+  // A corner that only meets itself is fine: one cube alone.
+  EXPECT_NO_THROW(fm::mesh_surfaces(mesher_shapes::cube().points, mesher_shapes::cube().triangles));
 }
 
 TEST(MesherInput, InconsistentOrientation)
