@@ -357,7 +357,7 @@ CGAL::Fast_mesher_3::Quality_report quality_of(Mesh mesh)
   if(2 * negative > mesh.tetrahedra.size())
     for(auto& t : mesh.tetrahedra) std::swap(t[0], t[1]);
   mesh.size.assign(mesh.points.size(), 1.0); // edge length / h is not in the table
-  return CGAL::Fast_mesher_3::quality_report(mesh);
+  return CGAL::Fast_mesher_3::quality_report(mesh, std::max(1, int(std::thread::hardware_concurrency())));
 }
 
 // ------------------------------------------------------------------------------------------------ table

@@ -153,6 +153,45 @@ TEST(Mesher, QualityReportAgreesWithIndependentChecks)
   EXPECT_FALSE(CGAL::Fast_mesher_3::quality_report(broken).boundary_equals_input());
 }
 
+// The report's loops on two threads give every figure of one thread's.
+TEST(Mesher, QualityReportSameOnTwoThreads)
+{
+  const Surface s = mesher_shapes::cube();
+  CGAL::Fast_mesher_3::Mesher_options options;
+  options.maximum_size = 0.04;
+  options.optimize = false; // the cube's two triangles a face leave flat tetrahedra the improvement would work on
+  const Mesh mesh = CGAL::Fast_mesher_3::mesh_surfaces(s.points, s.triangles, options);
+  ASSERT_GT(mesh.tetrahedra.size(), 40000u); // two chunks of at least 16384
+  const CGAL::Fast_mesher_3::Quality_report a = CGAL::Fast_mesher_3::quality_report(mesh, 1);
+  const CGAL::Fast_mesher_3::Quality_report b = CGAL::Fast_mesher_3::quality_report(mesh, 2);
+  EXPECT_EQ(a.tetrahedra_per_subdomain, b.tetrahedra_per_subdomain);
+  EXPECT_EQ(a.min_dihedral_degrees, b.min_dihedral_degrees);
+  EXPECT_EQ(a.max_dihedral_degrees, b.max_dihedral_degrees);
+  EXPECT_EQ(a.min_dihedral_1st_percentile, b.min_dihedral_1st_percentile);
+  EXPECT_EQ(a.mean_min_dihedral, b.mean_min_dihedral);
+  EXPECT_EQ(a.min_dihedral_histogram, b.min_dihedral_histogram);
+  EXPECT_EQ(a.tetrahedra_below_10_degrees, b.tetrahedra_below_10_degrees);
+  EXPECT_EQ(a.min_gamma, b.min_gamma);
+  EXPECT_EQ(a.gamma_1st_percentile, b.gamma_1st_percentile);
+  EXPECT_EQ(a.mean_gamma, b.mean_gamma);
+  EXPECT_EQ(a.gamma_histogram, b.gamma_histogram);
+  EXPECT_EQ(a.tetrahedra_below_gamma_0_3, b.tetrahedra_below_gamma_0_3);
+  EXPECT_EQ(a.tetrahedra_forced_below_gamma_0_3, b.tetrahedra_forced_below_gamma_0_3);
+  EXPECT_EQ(a.radius_edge_histogram, b.radius_edge_histogram);
+  EXPECT_EQ(a.max_radius_edge, b.max_radius_edge);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.edges_below_0_7h, b.edges_below_0_7h);
+  EXPECT_EQ(a.min_edge_over_h, b.min_edge_over_h);
+  EXPECT_EQ(a.max_edge_over_h, b.max_edge_over_h);
+  EXPECT_EQ(a.mean_edge_over_h, b.mean_edge_over_h);
+  EXPECT_EQ(a.inverted_tetrahedra, b.inverted_tetrahedra);
+  EXPECT_EQ(a.missing_input_triangles, b.missing_input_triangles);
+  EXPECT_EQ(a.extra_boundary_facets, b.extra_boundary_facets);
+  std::size_t in_histogram = 0;
+  for(std::size_t k : b.gamma_histogram) in_histogram += k;
+  EXPECT_EQ(in_histogram, mesh.tetrahedra.size());
+}
+
 // CGAL's elephant: a fine organic surface whose triangles the empty mesh
 // already has (no TetGen), h from the surface alone.
 TEST(Mesher, CgalDataElephant)

@@ -163,7 +163,8 @@ int main(int argc, char** argv)
       std::cout << "total (without input)   " << stats.total_seconds << " s, "
                 << (stats.total_seconds > 0 ? mesh.tetrahedra.size() / stats.total_seconds : 0)
                 << " tetrahedra per second\n";
-      CGAL::Fast_mesher_3::print_quality_report(std::cout, CGAL::Fast_mesher_3::quality_report(mesh));
+      CGAL::Fast_mesher_3::print_quality_report(std::cout,
+                                                CGAL::Fast_mesher_3::quality_report(mesh, options.threads));
       std::cout << "wrote " << output << "\n";
     }
   } catch(const std::exception& e) {

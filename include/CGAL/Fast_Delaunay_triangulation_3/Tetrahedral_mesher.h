@@ -506,9 +506,11 @@ inline void write_mesh(const std::string& path, const Tetrahedral_mesh& mesh)
   Fast_Delaunay_triangulation_3_internal::mesher::write_mesh_file(path, mesh);
 }
 
-inline Quality_report quality_report(const Tetrahedral_mesh& mesh)
+// The figures of Quality_report; `threads` share its loops (TBB), and the
+// figures are the same for any number.
+inline Quality_report quality_report(const Tetrahedral_mesh& mesh, int threads = 1)
 {
-  return Fast_Delaunay_triangulation_3_internal::mesher::quality_report(mesh);
+  return Fast_Delaunay_triangulation_3_internal::mesher::quality_report(mesh, threads);
 }
 
 inline void print_quality_report(std::ostream& out, const Quality_report& report)

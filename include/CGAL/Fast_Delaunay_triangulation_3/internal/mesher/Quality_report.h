@@ -20,6 +20,7 @@
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Radix_sort.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Refinement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedron_quality.h>
@@ -103,21 +104,28 @@ struct Records_by_vertex
   std::vector<std::size_t> begin; // of vertex v's records: begin[v] .. begin[v + 1]
   std::vector<Record> records;
 
-  // key(i) and record(i) for i in [0, n): the vertex and its record.
+  // key(i) and record(i) for i in [0, n): the vertex and its record; the
+  // groups are sorted on `threads` threads.
   template <class Key, class Make>
-  Records_by_vertex(std::size_t vertices, std::size_t n, const Key& key, const Make& record)
+  Records_by_vertex(std::size_t vertices, std::size_t n, const Key& key, const Make& record, int threads = 1)
       : begin(vertices + 2, 0), records(n)
   {
     for(std::size_t i = 0; i < n; ++i) ++begin[key(i) + 2];
     for(std::size_t v = 2; v < begin.size(); ++v) begin[v] += begin[v - 1];
     for(std::size_t i = 0; i < n; ++i) records[begin[key(i) + 1]++] = record(i);
     begin.pop_back();
-    for(std::size_t v = 0; v + 1 < begin.size(); ++v)
-      std::sort(records.begin() + begin[v], records.begin() + begin[v + 1]);
+    const int chunks = chunk_count(vertices, threads);
+    for_each_chunk(chunks, [&](int c) {
+      for(std::size_t v = chunk_begin(vertices, chunks, c); v < chunk_begin(vertices, chunks, c + 1); ++v)
+        std::sort(records.begin() + begin[v], records.begin() + begin[v + 1]);
+    });
   }
 };
 
-inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh)
+// `threads`: the loops over the tetrahedra and the vertices run on as many
+// (TBB); the figures are the same for any number.
+inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh,
+                                                          int threads = 1)
 {
   CGAL::Fast_mesher_3::Quality_report q;
   q.vertices = mesh.points.size();
@@ -129,8 +137,6 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   q.min_dihedral_histogram.assign(static_cast<std::size_t>(std::ceil(75 / q.min_dihedral_bin_degrees)), 0);
   q.gamma_histogram.assign(10, 0);
   std::vector<double> gammas, smallest_angles;
-  gammas.reserve(mesh.tetrahedra.size());
-  smallest_angles.reserve(mesh.tetrahedra.size());
 
   std::vector<std::array<std::uint32_t, 3>> input, forcing;
   for(auto t : mesh.triangles) {
@@ -151,55 +157,79 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   q.input_triangles_forcing_gamma_0_3 = forcing.size();
 
   // Per tetrahedron: its six edges as (lower, higher) vertex and its four
-  // facets as sorted vertices with its subdomain.
-  std::vector<std::array<std::uint32_t, 2>> tet_edges;
-  std::vector<std::array<std::uint32_t, 4>> tet_facets;
-  tet_edges.reserve(6 * mesh.tetrahedra.size());
-  tet_facets.reserve(4 * mesh.tetrahedra.size());
-  for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
-    const auto& tv = mesh.tetrahedra[t];
-    const double* w[4] = {mesh.points[tv[0]].data(), mesh.points[tv[1]].data(), mesh.points[tv[2]].data(),
-                          mesh.points[tv[3]].data()};
-    const int s = mesh.subdomain[t];
-    if(s >= 1 && s <= mesh.number_of_subdomains) ++q.tetrahedra_per_subdomain[s];
-    if(orientation(w[0], w[1], w[2], w[3]) <= 0) ++q.inverted_tetrahedra;
-    const Dihedral_range angles = dihedral_range(w);
-    q.min_dihedral_degrees = std::min(q.min_dihedral_degrees, angles.smallest);
-    q.max_dihedral_degrees = std::max(q.max_dihedral_degrees, angles.largest);
-    smallest_angles.push_back(angles.smallest);
-    q.tetrahedra_below_10_degrees += angles.smallest < 10 ? 1 : 0;
-    ++q.min_dihedral_histogram[std::min(q.min_dihedral_histogram.size() - 1,
-                                        static_cast<std::size_t>(angles.smallest / q.min_dihedral_bin_degrees))];
-    const double gamma = gamma_quality(w[0], w[1], w[2], w[3]);
-    gammas.push_back(gamma);
-    q.tetrahedra_below_gamma_0_3 += gamma < 0.3 ? 1 : 0;
-    ++q.gamma_histogram[static_cast<std::size_t>(std::min(9.0, std::max(0.0, gamma * 10)))];
-    double shortest = std::numeric_limits<double>::infinity();
-    for(const auto& e : cell_edge_vertices) {
-      const double l = distance(w[e[0]], w[e[1]]);
-      shortest = std::min(shortest, l);
-      tet_edges.push_back({std::min(tv[e[0]], tv[e[1]]), std::max(tv[e[0]], tv[e[1]])});
+  // facets as sorted vertices with its subdomain, its gamma and smallest
+  // angle, by index; counts and extremes per chunk, added up in chunk
+  // order: the figures do not depend on the number of threads.
+  const std::size_t n = mesh.tetrahedra.size();
+  std::vector<std::array<std::uint32_t, 2>> tet_edges(6 * n);
+  std::vector<std::array<std::uint32_t, 4>> tet_facets(4 * n);
+  gammas.resize(n);
+  smallest_angles.resize(n);
+  const int chunks = chunk_count(n, threads);
+  std::vector<CGAL::Fast_mesher_3::Quality_report> tallies(chunks, q);
+  for_each_chunk(chunks, [&](int c) {
+    CGAL::Fast_mesher_3::Quality_report& tally = tallies[c];
+    for(std::size_t t = chunk_begin(n, chunks, c); t < chunk_begin(n, chunks, c + 1); ++t) {
+      const auto& tv = mesh.tetrahedra[t];
+      const double* w[4] = {mesh.points[tv[0]].data(), mesh.points[tv[1]].data(), mesh.points[tv[2]].data(),
+                            mesh.points[tv[3]].data()};
+      const int s = mesh.subdomain[t];
+      if(s >= 1 && s <= mesh.number_of_subdomains) ++tally.tetrahedra_per_subdomain[s];
+      if(orientation(w[0], w[1], w[2], w[3]) <= 0) ++tally.inverted_tetrahedra;
+      const Dihedral_range angles = dihedral_range(w);
+      tally.min_dihedral_degrees = std::min(tally.min_dihedral_degrees, angles.smallest);
+      tally.max_dihedral_degrees = std::max(tally.max_dihedral_degrees, angles.largest);
+      smallest_angles[t] = angles.smallest;
+      tally.tetrahedra_below_10_degrees += angles.smallest < 10 ? 1 : 0;
+      ++tally.min_dihedral_histogram[std::min(tally.min_dihedral_histogram.size() - 1,
+                                              static_cast<std::size_t>(angles.smallest / q.min_dihedral_bin_degrees))];
+      const double gamma = gamma_quality(w[0], w[1], w[2], w[3]);
+      gammas[t] = gamma;
+      tally.tetrahedra_below_gamma_0_3 += gamma < 0.3 ? 1 : 0;
+      ++tally.gamma_histogram[static_cast<std::size_t>(std::min(9.0, std::max(0.0, gamma * 10)))];
+      double shortest = std::numeric_limits<double>::infinity();
+      for(int k = 0; k < 6; ++k) {
+        const auto& e = cell_edge_vertices[k];
+        shortest = std::min(shortest, distance(w[e[0]], w[e[1]]));
+        tet_edges[6 * t + k] = {std::min(tv[e[0]], tv[e[1]]), std::max(tv[e[0]], tv[e[1]])};
+      }
+      double centre[3];
+      if(circumcentre(w[0], w[1], w[2], w[3], centre)) {
+        const double ratio = distance(centre, w[0]) / shortest;
+        tally.max_radius_edge = std::max(tally.max_radius_edge, ratio);
+        std::size_t bin = 0;
+        while(bin + 1 < q.radius_edge_bin_lower.size() && ratio >= q.radius_edge_bin_lower[bin + 1]) ++bin;
+        ++tally.radius_edge_histogram[bin];
+      }
+      bool forced = false;
+      for(int f = 0; f < 4; ++f) {
+        std::array<std::uint32_t, 3> key;
+        for(int i = 0, k = 0; i < 4; ++i)
+          if(i != f) key[k++] = tv[i];
+        std::sort(key.begin(), key.end());
+        tet_facets[4 * t + f] = {key[0], key[1], key[2], static_cast<std::uint32_t>(s)};
+        forced = forced || std::binary_search(forcing.begin(), forcing.end(), key);
+      }
+      // (The bound makes every forced gamma smaller; the test keeps the count
+      // a part of the one under 0.3 whatever the roundings.)
+      tally.tetrahedra_forced_below_gamma_0_3 += forced && gamma < 0.3 ? 1 : 0;
     }
-    double centre[3];
-    if(circumcentre(w[0], w[1], w[2], w[3], centre)) {
-      const double ratio = distance(centre, w[0]) / shortest;
-      q.max_radius_edge = std::max(q.max_radius_edge, ratio);
-      std::size_t bin = 0;
-      while(bin + 1 < q.radius_edge_bin_lower.size() && ratio >= q.radius_edge_bin_lower[bin + 1]) ++bin;
-      ++q.radius_edge_histogram[bin];
-    }
-    bool forced = false;
-    for(int f = 0; f < 4; ++f) {
-      std::array<std::uint32_t, 3> key;
-      for(int i = 0, k = 0; i < 4; ++i)
-        if(i != f) key[k++] = tv[i];
-      std::sort(key.begin(), key.end());
-      tet_facets.push_back({key[0], key[1], key[2], static_cast<std::uint32_t>(s)});
-      forced = forced || std::binary_search(forcing.begin(), forcing.end(), key);
-    }
-    // (The bound makes every forced gamma smaller; the test keeps the count
-    // a part of the one under 0.3 whatever the roundings.)
-    q.tetrahedra_forced_below_gamma_0_3 += forced && gamma < 0.3 ? 1 : 0;
+  });
+  auto add = [](std::vector<std::size_t>& sum, const std::vector<std::size_t>& part) {
+    for(std::size_t i = 0; i < sum.size(); ++i) sum[i] += part[i];
+  };
+  for(const auto& tally : tallies) {
+    add(q.tetrahedra_per_subdomain, tally.tetrahedra_per_subdomain);
+    add(q.min_dihedral_histogram, tally.min_dihedral_histogram);
+    add(q.gamma_histogram, tally.gamma_histogram);
+    add(q.radius_edge_histogram, tally.radius_edge_histogram);
+    q.inverted_tetrahedra += tally.inverted_tetrahedra;
+    q.tetrahedra_below_10_degrees += tally.tetrahedra_below_10_degrees;
+    q.tetrahedra_below_gamma_0_3 += tally.tetrahedra_below_gamma_0_3;
+    q.tetrahedra_forced_below_gamma_0_3 += tally.tetrahedra_forced_below_gamma_0_3;
+    q.min_dihedral_degrees = std::min(q.min_dihedral_degrees, tally.min_dihedral_degrees);
+    q.max_dihedral_degrees = std::max(q.max_dihedral_degrees, tally.max_dihedral_degrees);
+    q.max_radius_edge = std::max(q.max_radius_edge, tally.max_radius_edge);
   }
 
   if(!gammas.empty()) q.min_gamma = *std::min_element(gammas.begin(), gammas.end());
@@ -212,7 +242,7 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   // of its ends.
   const Records_by_vertex<std::uint32_t> edges(
       mesh.points.size(), tet_edges.size(), [&](std::size_t i) { return tet_edges[i][0]; },
-      [&](std::size_t i) { return tet_edges[i][1]; });
+      [&](std::size_t i) { return tet_edges[i][1]; }, threads);
   double sum = 0;
   q.min_edge_over_h = std::numeric_limits<double>::infinity();
   for(std::uint32_t a = 0; a < mesh.points.size(); ++a)
@@ -235,28 +265,46 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
       mesh.points.size(), tet_facets.size(), [&](std::size_t i) { return tet_facets[i][0]; },
       [&](std::size_t i) {
         return std::array<std::uint32_t, 3>{tet_facets[i][1], tet_facets[i][2], tet_facets[i][3]};
-      });
+      },
+      threads);
+  // The boundary facets are counted, then the input triangles looked up
+  // (each distinct one once): a boundary facet that is no input triangle is
+  // extra; an input triangle is missing where it is no facet (counted for
+  // each copy) or a facet inside a subdomain.
+  auto sides_of = [&](std::size_t k, std::size_t group_end) {
+    std::size_t end = k + 1;
+    while(end < group_end && facets.records[end][0] == facets.records[k][0] &&
+          facets.records[end][1] == facets.records[k][1])
+      ++end;
+    return end - k;
+  };
+  auto on_boundary = [&](std::size_t k, std::size_t sides) {
+    return sides == 1 || (sides == 2 && facets.records[k][2] != facets.records[k + 1][2]);
+  };
+  std::size_t boundary_facets = 0;
   for(std::uint32_t a = 0; a < mesh.points.size(); ++a)
     for(std::size_t k = facets.begin[a]; k < facets.begin[a + 1];) {
-      const std::array<std::uint32_t, 3>& first = facets.records[k];
-      std::size_t end = k + 1;
-      while(end < facets.begin[a + 1] && facets.records[end][0] == first[0] && facets.records[end][1] == first[1])
-        ++end;
-      const std::size_t sides = end - k;
-      const bool boundary = sides == 1 || (sides == 2 && facets.records[k][2] != facets.records[k + 1][2]);
-      const bool is_input =
-          std::binary_search(input.begin(), input.end(), std::array<std::uint32_t, 3>{a, first[0], first[1]});
-      if(boundary && !is_input) ++q.extra_boundary_facets;
-      if(!boundary && is_input) ++q.missing_input_triangles;
-      k = end;
+      const std::size_t sides = sides_of(k, facets.begin[a + 1]);
+      boundary_facets += on_boundary(k, sides) ? 1 : 0;
+      k += sides;
     }
-  for(const auto& t : input) {
-    const auto group_begin = facets.records.begin() + facets.begin[t[0]];
-    const auto group_end = facets.records.begin() + facets.begin[t[0] + 1];
+  std::size_t input_on_boundary = 0;
+  for(std::size_t i = 0; i < input.size(); ++i) {
+    const auto& t = input[i];
+    const std::size_t group_begin = facets.begin[t[0]], group_end = facets.begin[t[0] + 1];
     const std::array<std::uint32_t, 3> lowest_side = {t[1], t[2], 0};
-    const auto found = std::lower_bound(group_begin, group_end, lowest_side);
-    if(found == group_end || (*found)[0] != t[1] || (*found)[1] != t[2]) ++q.missing_input_triangles;
+    const std::size_t k = std::size_t(
+        std::lower_bound(facets.records.begin() + group_begin, facets.records.begin() + group_end, lowest_side) -
+        facets.records.begin());
+    if(k == group_end || facets.records[k][0] != t[1] || facets.records[k][1] != t[2]) {
+      ++q.missing_input_triangles;
+      continue;
+    }
+    if(i > 0 && input[i - 1] == t) continue; // a copy: the facet is counted
+    if(on_boundary(k, sides_of(k, group_end))) ++input_on_boundary;
+    else ++q.missing_input_triangles;
   }
+  q.extra_boundary_facets = boundary_facets - input_on_boundary;
   return q;
 }
 
