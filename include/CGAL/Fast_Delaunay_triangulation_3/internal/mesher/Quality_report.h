@@ -21,6 +21,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Radix_sort.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Records_by_vertex.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Refinement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedron_quality.h>
@@ -93,34 +94,6 @@ inline double mean(const std::vector<double>& values)
   for(double x : values) sum += x;
   return values.empty() ? 0 : sum / values.size();
 }
-
-// Records keyed by a vertex, grouped by it (a counting sort: offsets per
-// vertex, then the records), each group sorted: the edges and the facets
-// of a mesh without a map of them (on bunny00's 1.25 million tetrahedra,
-// maps of edges and facets made the report take 5.5 s).
-template <class Record>
-struct Records_by_vertex
-{
-  std::vector<std::size_t> begin; // of vertex v's records: begin[v] .. begin[v + 1]
-  std::vector<Record> records;
-
-  // key(i) and record(i) for i in [0, n): the vertex and its record; the
-  // groups are sorted on `threads` threads.
-  template <class Key, class Make>
-  Records_by_vertex(std::size_t vertices, std::size_t n, const Key& key, const Make& record, int threads = 1)
-      : begin(vertices + 2, 0), records(n)
-  {
-    for(std::size_t i = 0; i < n; ++i) ++begin[key(i) + 2];
-    for(std::size_t v = 2; v < begin.size(); ++v) begin[v] += begin[v - 1];
-    for(std::size_t i = 0; i < n; ++i) records[begin[key(i) + 1]++] = record(i);
-    begin.pop_back();
-    const int chunks = chunk_count(vertices, threads);
-    for_each_chunk(chunks, [&](int c) {
-      for(std::size_t v = chunk_begin(vertices, chunks, c); v < chunk_begin(vertices, chunks, c + 1); ++v)
-        std::sort(records.begin() + begin[v], records.begin() + begin[v + 1]);
-    });
-  }
-};
 
 // `threads`: the loops over the tetrahedra and the vertices run on as many
 // (TBB); the figures are the same for any number.

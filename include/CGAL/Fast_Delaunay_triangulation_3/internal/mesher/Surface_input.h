@@ -22,6 +22,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Records_by_vertex.h>
 
 #include <algorithm>
 #include <array>
@@ -333,17 +334,15 @@ inline void check_manifold_vertices(const Surface_soup& soup)
 {
   using namespace surface_detail;
   const std::size_t n = soup.points.size();
-  // The directed edges by their first vertex: (second vertex, triangle),
-  // each vertex's sorted.
-  std::vector<std::size_t> begin(n + 1, 0);
-  for(const auto& t : soup.triangles)
-    for(std::uint32_t v : t) ++begin[v + 1];
-  for(std::size_t v = 0; v < n; ++v) begin[v + 1] += begin[v];
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> out(begin[n]);
-  std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
-  for(std::uint32_t t = 0; t < soup.triangles.size(); ++t)
-    for(int i = 0; i < 3; ++i) out[next[soup.triangles[t][i]]++] = {soup.triangles[t][(i + 1) % 3], t};
-  for(std::size_t v = 0; v < n; ++v) std::sort(out.begin() + begin[v], out.begin() + begin[v + 1]);
+  // The directed edges (corner i to corner i + 1 of a triangle) by their
+  // first vertex: (second vertex, triangle).
+  const Records_by_vertex<std::pair<std::uint32_t, std::uint32_t>> edges(
+      n, 3 * soup.triangles.size(), [&](std::size_t e) { return soup.triangles[e / 3][e % 3]; },
+      [&](std::size_t e) {
+        return std::make_pair(soup.triangles[e / 3][(e % 3 + 1) % 3], static_cast<std::uint32_t>(e / 3));
+      });
+  const std::vector<std::size_t>& begin = edges.begin;
+  const auto& out = edges.records;
   auto triangle_of = [&](std::uint32_t a, std::uint32_t b) { // the one with a -> b
     const auto found = std::lower_bound(out.begin() + begin[a], out.begin() + begin[a + 1],
                                         std::make_pair(b, std::uint32_t(0)));
