@@ -9,7 +9,8 @@
 // thread count.  The inputs are small (this file also runs under
 // ThreadSanitizer), so the partitions' threshold is lowered for the
 // partitioned attempts to run at all, and every test asserts they did.
-// The boundary recovery's threads (the region's search, our flips beside
+// FILTERPOINTS' runs (one per thread) on 34,000 points against the
+// greedy filter.  The boundary recovery's threads (the region's search, our flips beside
 // TetGen's calls, the checks of the replacements, the facet look-ups) on
 // CGAL's fandisk: the same mesh and flags as one thread's.
 
@@ -21,8 +22,10 @@
 #include "mesher_checks.h"
 #include "mesher_shapes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -173,6 +176,60 @@ TEST(ParallelRefinement, TinyPartitionsFallBackToSequential)
 
 namespace fm = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
 namespace fi = CGAL::Fast_Delaunay_triangulation_3_internal;
+
+// FILTERPOINTS on one run per thread: what it keeps is in the input's
+// order and no point is closer than min_edge_ratio times its size to one
+// kept before it, whatever the thread count; on one thread it is the
+// greedy filter (checked against a plain scan); on two and four, runs
+// that each keep a share, and only their borders lose a few points.
+TEST(ParallelRefinement, FilterKeepsTheSpacingOnEveryRun)
+{
+  const double ratio = 0.7;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0, 1), size(0.08, 0.16);
+  std::vector<fm::Refinement_point> points(34000);
+  for(fm::Refinement_point& r : points) {
+    for(double& x : r.p) x = unit(random);
+    r.h = size(random);
+    r.subdomain = 1;
+  }
+  // Slabs along x: each run a compact region, as runs of the curve are.
+  std::sort(points.begin(), points.end(),
+            [](const fm::Refinement_point& a, const fm::Refinement_point& b) { return a.p[0] < b.p[0]; });
+  ASSERT_EQ(fi::chunk_count(points.size(), 4), 2); // 34,000 points make two runs at most
+  auto too_close = [ratio](const fm::Refinement_point& earlier, const fm::Refinement_point& later) {
+    return fm::distance(earlier.p, later.p) < ratio * later.h;
+  };
+  std::vector<std::size_t> greedy; // indices into points
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    bool keep = true;
+    for(std::size_t k = 0; k < greedy.size() && keep; ++k) keep = !too_close(points[greedy[k]], points[i]);
+    if(keep) greedy.push_back(i);
+  }
+  ASSERT_GT(greedy.size(), 500u);
+  for(int threads : {1, 2, 4}) {
+    SCOPED_TRACE(threads);
+    std::vector<fm::Refinement_point> kept = points;
+    fm::filter_points(kept, ratio, threads);
+    // A subsequence of the input, in its order (the sizes tell the points apart).
+    std::size_t at = 0;
+    std::vector<std::size_t> index;
+    for(const fm::Refinement_point& r : kept) {
+      while(at < points.size() && points[at].h != r.h) ++at;
+      ASSERT_LT(at, points.size());
+      index.push_back(at++);
+    }
+    for(std::size_t j = 0; j < kept.size(); ++j)
+      for(std::size_t i = 0; i < j; ++i) ASSERT_FALSE(too_close(kept[i], kept[j])) << i << " " << j;
+    if(threads == 1) {
+      EXPECT_EQ(index, greedy);
+    } else {
+      EXPECT_NE(index, greedy);
+      EXPECT_GT(kept.size(), greedy.size() * 95 / 100);
+      EXPECT_LE(kept.size(), greedy.size() * 103 / 100);
+    }
+  }
+}
 
 // The recovered mesh's records, slot by slot, and the constrained flags.
 struct Recovered

@@ -280,6 +280,143 @@ private:
   std::vector<std::vector<Tet_id>> cavities_; // per partition
 };
 
+// The accepted points of FILTERPOINTS by grid cell: one linked list per
+// cell, heads in an open-addressing table.  Replaces a
+// std::unordered_multimap (one node allocation per point, 27 bucket
+// searches per candidate) that took about 40% of the refinement.
+class Filter_cell_lists
+{
+public:
+  static constexpr std::uint32_t none = std::uint32_t(-1);
+  struct Cell { std::int64_t i, j, k; };
+
+  // Room for `points` points (the table stays at most half full).
+  void reserve(std::size_t points)
+  {
+    std::size_t capacity = 16;
+    while(capacity < 2 * points) capacity *= 2;
+    slots_.assign(capacity, Slot{{0, 0, 0}, none});
+    next_.clear();
+    next_.reserve(points);
+  }
+
+  std::uint32_t first(const Cell& c) const { return slots_[find(c)].head; }
+  std::uint32_t next(std::uint32_t q) const { return next_[q]; }
+
+  // Point q (numbered in order from 0) joins cell c.
+  void add(const Cell& c, std::uint32_t q)
+  {
+    CGAL_precondition(q == next_.size() && next_.size() < slots_.size() / 2);
+    Slot& slot = slots_[find(c)];
+    slot.cell = c;
+    next_.push_back(slot.head);
+    slot.head = q;
+  }
+
+private:
+  struct Slot { Cell cell; std::uint32_t head; };
+
+  // The slot of c, or the empty slot where c would go (the table is at
+  // most half full, so there is one).
+  std::size_t find(const Cell& c) const
+  {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t h = ((static_cast<std::uint64_t>(c.i) * 73856093u) ^ (static_cast<std::uint64_t>(c.j) * 19349663u) ^
+                     (static_cast<std::uint64_t>(c.k) * 83492791u)) * 0x9e3779b97f4a7c15ull >> 20;
+    for(;; ++h) {
+      const Slot& s = slots_[h & mask];
+      if(s.head == none || (s.cell.i == c.i && s.cell.j == c.j && s.cell.k == c.k)) return h & mask;
+    }
+  }
+
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> next_;
+};
+
+// The filter's cells: cubes of side `side`.
+struct Filter_cells
+{
+  double side;
+
+  std::int64_t index(double x) const { return static_cast<std::int64_t>(std::floor(x / side)); }
+  Filter_cell_lists::Cell cell_of(const double* p) const { return {index(p[0]), index(p[1]), index(p[2])}; }
+
+  // Whether a point of `kept`, listed by cell in `grid`, is closer to r
+  // than `radius`.
+  bool has_point_near(const Filter_cell_lists& grid, const std::vector<Refinement_point>& kept,
+                      const Refinement_point& r, double radius) const
+  {
+    // A hair wider than the radius: p +- radius rounds.
+    const double reach = radius * (1 + 1e-12);
+    std::int64_t from[3], to[3];
+    for(int a = 0; a < 3; ++a) {
+      from[a] = index(r.p[a] - reach);
+      to[a] = index(r.p[a] + reach);
+    }
+    for(std::int64_t i = from[0]; i <= to[0]; ++i)
+      for(std::int64_t j = from[1]; j <= to[1]; ++j)
+        for(std::int64_t k = from[2]; k <= to[2]; ++k)
+          for(std::uint32_t q = grid.first({i, j, k}); q != Filter_cell_lists::none; q = grid.next(q))
+            if(distance(kept[q].p, r.p) < radius) return true;
+    return false;
+  }
+};
+
+// FILTERPOINTS: greedy in the curve's order with a hash grid; a point is
+// dropped when an accepted one is closer than min_edge_ratio times its
+// size.  A point looks at the cells its radius's box reaches on each
+// axis, so any cell size gives the same answer and only sets the cost,
+// measured on bunny00 (2 threads, the pass's filter time, same points):
+// a cell of the 90th percentile of the radii and a reach of one cell all
+// around, 27 cells, 0.174 s; the radius's box, 0.145 s; that box in
+// cells of twice that percentile, 0.125 s, of three times, 0.117 s.
+// On several threads the curve's order is cut into one run per thread
+// (a run of the curve is a compact region) and each run is filtered so
+// on its own; then a point a run kept is dropped if a point an earlier
+// run kept is too close.  That second look reads what the first kept, so
+// the runs take it at once too; a point it drops may have made its run
+// drop a neighbour, so near the runs' borders a few points fewer go in,
+// which the next pass makes up.  One run is the greedy filter itself.
+inline void filter_points(std::vector<Refinement_point>& points, double min_edge_ratio, int threads)
+{
+  if(points.empty()) return;
+  // The percentile of a sample (every stride-th point): the cell size
+  // sets only the cost, and the selection over every radius took a
+  // quarter of the filter on bunny00.
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / 4096);
+  std::vector<double> radii;
+  for(std::size_t i = 0; i < points.size(); i += stride) radii.push_back(min_edge_ratio * points[i].h);
+  const std::size_t at = std::min(radii.size() - 1, radii.size() * 9 / 10);
+  std::nth_element(radii.begin(), radii.begin() + at, radii.end());
+  const Filter_cells cells{3 * radii[at]};
+  const int runs = chunk_count(points.size(), std::max(1, threads));
+  std::vector<Filter_cell_lists> grids(runs);
+  std::vector<std::vector<Refinement_point>> kept(runs);
+  for_each_chunk(runs, [&](int c) {
+    const std::size_t begin = chunk_begin(points.size(), runs, c), end = chunk_begin(points.size(), runs, c + 1);
+    grids[c].reserve(end - begin);
+    for(std::size_t i = begin; i < end; ++i) {
+      const Refinement_point& r = points[i];
+      if(cells.has_point_near(grids[c], kept[c], r, min_edge_ratio * r.h)) continue;
+      grids[c].add(cells.cell_of(r.p), static_cast<std::uint32_t>(kept[c].size()));
+      kept[c].push_back(r);
+    }
+  });
+  std::vector<std::vector<char>> dropped(runs);
+  for_each_chunk(runs, [&](int c) {
+    dropped[c].assign(kept[c].size(), 0);
+    for(std::size_t i = 0; i < kept[c].size(); ++i) {
+      const Refinement_point& r = kept[c][i];
+      for(int d = 0; d < c && !dropped[c][i]; ++d)
+        dropped[c][i] = cells.has_point_near(grids[d], kept[d], r, min_edge_ratio * r.h);
+    }
+  });
+  points.clear();
+  for(int c = 0; c < runs; ++c)
+    for(std::size_t i = 0; i < kept[c].size(); ++i)
+      if(!dropped[c][i]) points.push_back(kept[c][i]);
+}
+
 class Constrained_refinement
 {
 public:
@@ -299,7 +436,7 @@ public:
       pass.candidates = points.size();
       const Clock::time_point t1 = Clock::now();
       sort_along_curve(points);
-      filter_points(points);
+      filter_points(points, options_.min_edge_ratio, options_.threads);
       pass.filtered_out = pass.candidates - points.size();
       const Clock::time_point t2 = Clock::now();
       insert_points(points, k == 0, pass);
@@ -321,9 +458,16 @@ public:
 private:
   std::size_t count_volume_tetrahedra() const
   {
+    const std::size_t slots = cm_.mesh.number_of_slots();
+    const int chunks = chunk_count(slots, std::max(1, options_.threads));
+    std::vector<std::size_t> counts(chunks, 0);
+    for_each_chunk(chunks, [&](int c) {
+      const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
+      for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t)
+        counts[c] += cm_.mesh.is_live(t) && cm_.subdomain[t] > 0 ? 1 : 0;
+    });
     std::size_t n = 0;
-    for(Tet_id t = 0; t < cm_.mesh.number_of_slots(); ++t)
-      n += cm_.mesh.is_live(t) && cm_.subdomain[t] > 0 ? 1 : 0;
+    for(std::size_t k : counts) n += k;
     return n;
   }
 
@@ -403,104 +547,21 @@ private:
     const Moore_grid grid(cm_.box_lo, cm_.box_hi, moore_bits_per_axis(points.size()));
     const Moore_curve curve(grid.bits_per_axis());
     std::vector<Key_value<std::uint32_t>> keyed(points.size()), scratch;
-    for(std::size_t i = 0; i < points.size(); ++i) keyed[i] = {grid.key(curve, points[i].p), static_cast<std::uint32_t>(i)};
+    const int chunks = chunk_count(points.size(), std::max(1, options_.threads));
+    for_each_chunk(chunks, [&](int c) {
+      const std::size_t end = chunk_begin(points.size(), chunks, c + 1);
+      for(std::size_t i = chunk_begin(points.size(), chunks, c); i < end; ++i)
+        keyed[i] = {grid.key(curve, points[i].p), static_cast<std::uint32_t>(i)};
+    });
     // Stable: points with one key keep their sampling order.
     radix_sort(keyed, scratch, 3 * grid.bits_per_axis(), std::max(1, options_.threads));
     std::vector<Refinement_point> sorted(points.size());
-    for(std::size_t i = 0; i < points.size(); ++i) sorted[i] = points[keyed[i].value];
+    for_each_chunk(chunks, [&](int c) {
+      const std::size_t end = chunk_begin(points.size(), chunks, c + 1);
+      for(std::size_t i = chunk_begin(points.size(), chunks, c); i < end; ++i) sorted[i] = points[keyed[i].value];
+    });
     points.swap(sorted);
   }
-
-  // FILTERPOINTS: greedy in the curve's order with a hash grid; a point is
-  // dropped when an accepted one is closer than min_edge_ratio times its
-  // size.  A point looks at the cells its radius's box reaches on each
-  // axis, so any cell size gives the same answer and only sets the cost,
-  // measured on bunny00 (2 threads, the pass's filter time, same points):
-  // a cell of the 90th percentile of the radii and a reach of one cell all
-  // around, 27 cells, 0.174 s; the radius's box, 0.145 s; that box in
-  // cells of twice that percentile, 0.125 s, of three times, 0.117 s.
-  void filter_points(std::vector<Refinement_point>& points) const
-  {
-    if(points.empty()) return;
-    std::vector<double> radii(points.size());
-    for(std::size_t i = 0; i < points.size(); ++i) radii[i] = options_.min_edge_ratio * points[i].h;
-    const std::size_t at = std::min(points.size() - 1, points.size() * 9 / 10);
-    std::nth_element(radii.begin(), radii.begin() + at, radii.end());
-    const double cell = 3 * radii[at];
-    auto cell_of = [cell](double x) { return static_cast<std::int64_t>(std::floor(x / cell)); };
-    Cell_lists grid(points.size());
-    std::vector<Refinement_point> kept;
-    for(const Refinement_point& r : points) {
-      const double radius = options_.min_edge_ratio * r.h;
-      // A hair wider than the radius: p +- radius rounds.
-      const double reach = radius * (1 + 1e-12);
-      std::int64_t from[3], to[3];
-      for(int a = 0; a < 3; ++a) {
-        from[a] = cell_of(r.p[a] - reach);
-        to[a] = cell_of(r.p[a] + reach);
-      }
-      bool too_close = false;
-      for(std::int64_t i = from[0]; i <= to[0] && !too_close; ++i)
-        for(std::int64_t j = from[1]; j <= to[1] && !too_close; ++j)
-          for(std::int64_t k = from[2]; k <= to[2] && !too_close; ++k)
-            for(std::uint32_t q = grid.first({i, j, k}); q != Cell_lists::none && !too_close; q = grid.next(q))
-              too_close = distance(kept[q].p, r.p) < radius;
-      if(too_close) continue;
-      grid.add({cell_of(r.p[0]), cell_of(r.p[1]), cell_of(r.p[2])}, static_cast<std::uint32_t>(kept.size()));
-      kept.push_back(r);
-    }
-    points.swap(kept);
-  }
-
-  // The accepted points of FILTERPOINTS by grid cell: one linked list per
-  // cell, heads in an open-addressing table.  Replaces a
-  // std::unordered_multimap (one node allocation per point, 27 bucket
-  // searches per candidate) that took about 40% of the refinement.
-  class Cell_lists
-  {
-  public:
-    static constexpr std::uint32_t none = std::uint32_t(-1);
-    struct Cell { std::int64_t i, j, k; };
-
-    explicit Cell_lists(std::size_t points)
-    {
-      std::size_t capacity = 16;
-      while(capacity < 2 * points) capacity *= 2;
-      slots_.assign(capacity, Slot{{0, 0, 0}, none});
-    }
-
-    std::uint32_t first(const Cell& c) const { return slots_[find(c)].head; }
-    std::uint32_t next(std::uint32_t q) const { return next_[q]; }
-
-    // Point q (numbered in order from 0) joins cell c.
-    void add(const Cell& c, std::uint32_t q)
-    {
-      CGAL_precondition(q == next_.size() && next_.size() < slots_.size() / 2);
-      Slot& slot = slots_[find(c)];
-      slot.cell = c;
-      next_.push_back(slot.head);
-      slot.head = q;
-    }
-
-  private:
-    struct Slot { Cell cell; std::uint32_t head; };
-
-    // The slot of c, or the empty slot where c would go (the table is at
-    // most half full, so there is one).
-    std::size_t find(const Cell& c) const
-    {
-      const std::size_t mask = slots_.size() - 1;
-      std::size_t h = ((static_cast<std::uint64_t>(c.i) * 73856093u) ^ (static_cast<std::uint64_t>(c.j) * 19349663u) ^
-                       (static_cast<std::uint64_t>(c.k) * 83492791u)) * 0x9e3779b97f4a7c15ull >> 20;
-      for(;; ++h) {
-        const Slot& s = slots_[h & mask];
-        if(s.head == none || (s.cell.i == c.i && s.cell.j == c.j && s.cell.k == c.k)) return h & mask;
-      }
-    }
-
-    std::vector<Slot> slots_;
-    std::vector<std::uint32_t> next_;
-  };
 
   // INSERTPOINTS: every point gets its vertex record first (the engine
   // partitions vertices by their records), then the engine inserts them.
@@ -564,12 +625,17 @@ private:
     if(next == first_new + n) return;
     m.vertices.resize(next);
     cm_.size.resize(next);
-    for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
-      if(!m.is_live(t)) continue;
-      Vertex_id* tv = m.vertex_ids(t);
-      for(int i = 0; i < 4; ++i)
-        if(tv[i] >= first_new && tv[i] != ghost_vertex) tv[i] = renumber[tv[i] - first_new];
-    }
+    const std::size_t slots = m.number_of_slots();
+    const int chunks = chunk_count(slots, std::max(1, options_.threads));
+    for_each_chunk(chunks, [&](int c) {
+      const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
+      for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
+        if(!m.is_live(t)) continue;
+        Vertex_id* tv = m.vertex_ids(t);
+        for(int i = 0; i < 4; ++i)
+          if(tv[i] >= first_new && tv[i] != ghost_vertex) tv[i] = renumber[tv[i] - first_new];
+      }
+    });
   }
 
   static constexpr std::size_t first_pass_stride = 16;
