@@ -10,7 +10,8 @@
 // ThreadSanitizer), so the partitions' threshold is lowered for the
 // partitioned attempts to run at all, and every test asserts they did.
 // FILTERPOINTS' runs (one per thread) on 34,000 points against the
-// greedy filter.  The boundary recovery's threads (the region's search, our flips beside
+// greedy filter; the engine's kept vertex keys against keys computed at
+// every attempt.  The boundary recovery's threads (the region's search, our flips beside
 // TetGen's calls, the checks of the replacements, the facet look-ups) on
 // CGAL's fandisk: the same mesh and flags as one thread's.
 
@@ -27,6 +28,7 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace test_mesher_parallel {
@@ -176,6 +178,47 @@ TEST(ParallelRefinement, TinyPartitionsFallBackToSequential)
 
 namespace fm = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
 namespace fi = CGAL::Fast_Delaunay_triangulation_3_internal;
+
+// The partitions of a batch's attempts come from the vertices' curve keys,
+// which the engine keeps for the batch: computed at every attempt instead,
+// they give the same partitions, hence the same mesh.
+TEST(ParallelRefinement, KeptVertexKeysGiveTheSameMesh)
+{
+  const Case c = cases()[2]; // the torus
+  const CGAL::Fast_mesher_3::Mesher_options options = options_for(c, 2);
+  auto refine = [&](bool keep, std::size_t& settled_in_partitions) {
+    fm::Surface_soup soup = fm::surfaces_from_triangles(c.surface.points, c.surface.triangles);
+    const fm::Unit_scaling scaling(soup);
+    scaling.scale(soup);
+    fm::Constrained_mesh cm;
+    fm::empty_mesh_and_recovery(soup, 2, cm);
+    fm::flag_constrained_facets(soup, cm, 2);
+    fm::colour_volumes(cm);
+    CGAL::Fast_mesher_3::mesher_detail::set_size_bounds(options, scaling, cm.size);
+    fm::surface_sizes(soup, cm);
+    fm::Refinement_options refinement;
+    refinement.threads = 2;
+    refinement.min_points_per_thread = options.min_points_per_thread;
+    refinement.keep_vertex_keys = keep;
+    settled_in_partitions = 0;
+    for(const fm::Refinement_pass& pass : fm::Constrained_refinement(cm, refinement).run(nullptr))
+      settled_in_partitions += pass.settled_in_partitions;
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::array<fi::Vertex_id, 4>> tets;
+    const fi::Flat_storage& m = cm.mesh;
+    for(fi::Vertex_id v = 0; v < m.vertices.size(); ++v) points.push_back({m.point(v)[0], m.point(v)[1], m.point(v)[2]});
+    for(fi::Tet_id t = 0; t < m.number_of_slots(); ++t)
+      if(m.is_live(t)) tets.push_back({m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2), m.vertex(t, 3)});
+    return std::make_pair(points, tets);
+  };
+  std::size_t kept_settled = 0, computed_settled = 0;
+  const auto kept = refine(true, kept_settled);
+  const auto computed = refine(false, computed_settled);
+  EXPECT_GT(kept_settled, 0u);
+  EXPECT_EQ(kept_settled, computed_settled);
+  EXPECT_EQ(kept.first, computed.first);
+  EXPECT_EQ(kept.second, computed.second);
+}
 
 // FILTERPOINTS on one run per thread: what it keeps is in the input's
 // order and no point is closer than min_edge_ratio times its size to one

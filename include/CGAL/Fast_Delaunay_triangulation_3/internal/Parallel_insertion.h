@@ -228,6 +228,14 @@ public:
   typedef std::pair<Vertex_id, Vertex_id> Vertex_range;
   void set_sorted_runs(std::vector<Vertex_range> runs) { sorted_runs_ = std::move(runs); }
   void set_min_points_per_partition(std::size_t n) { min_points_per_partition_ = std::max<std::size_t>(n, 1); }
+  // The plain curve's key of each vertex record, computed once and kept
+  // while this engine lives, for the attempts whose curve is the plain one
+  // shifted (both first attempts of 2 partitions, the first of more): the
+  // caller promises that no record moves meanwhile.  Without sorted runs,
+  // each such attempt computed the key of every mesh vertex, three times
+  // for the first (the refinement's batches on bunny00: 13-17 ms of the
+  // first attempt, before its tasks).
+  void keep_vertex_keys() { keep_vertex_keys_ = true; }
   // Called with the points of insert()'s call settled so far: after every
   // attempt, and every progress_step points of the sequential finish and of
   // partition 0 during an attempt (there an estimate: partition 0's share
@@ -339,8 +347,9 @@ private:
     for(int quarter = 0; quarter < 2; ++quarter) {
       quarter_cut_first_ = quarter == 1;
       const Attempt_curve keys(lo_, hi_, transform_for(0, partitions, 3 * Attempt_curve::bits));
-      const Attempt_cut plan = rotated ? cut_rotated(m_, points, partitions, keys)
-                                       : cut_by_sorting(m_, points, partitions, keys);
+      const Attempt_cut plan = rotated
+                                 ? cut_rotated(m_, points, partitions, keys)
+                                 : cut_by_sorting(m_, points, partitions, keys, kept_keys(points, keys, partitions));
       assign_vertex_partitions(mesh_vertex_end(points), partitions, keys, plan.first_key);
       crossing[quarter] = 0;
       for(Tet_id t = 0; t < m_.number_of_slots(); t += first_cut_sample) {
@@ -480,14 +489,19 @@ private:
   }
 
   // Any points: one key each, radix sorted on the partitions' threads.
+  // `plain`: kept plain keys of the vertices (see keep_vertex_keys), for a
+  // shift-only curve; null: computed here.
   static Attempt_cut cut_by_sorting(const Flat_storage& m, const std::vector<Vertex_id>& points, int partitions,
-                                    const Attempt_curve& c)
+                                    const Attempt_curve& c, const std::uint64_t* plain = nullptr)
   {
+    CGAL_precondition(plain == nullptr || c.shift_only());
     std::vector<Key_value<std::uint32_t>> items(points.size()), scratch_items;
     const int chunks = chunk_count(points.size(), partitions);
     for_each_chunk(chunks, [&](int k) {
-      for(std::size_t i = chunk_begin(points.size(), chunks, k); i < chunk_begin(points.size(), chunks, k + 1); ++i)
-        items[i] = {c.key(m.point(points[i])), points[i]};
+      for(std::size_t i = chunk_begin(points.size(), chunks, k); i < chunk_begin(points.size(), chunks, k + 1); ++i) {
+        const Vertex_id v = points[i];
+        items[i] = {plain ? (plain[v] + c.transform.shift) & Attempt_curve::key_mask : c.key(m.point(v)), v};
+      }
     });
     const bool in_order = std::is_sorted(items.begin(), items.end(),
                                          [](const Key_value<std::uint32_t>& a, const Key_value<std::uint32_t>& b) {
@@ -530,6 +544,17 @@ private:
                                 const std::vector<std::uint64_t>& first_key)
   {
     partition_of_vertex_.resize(m_.vertices.size());
+    if(keep_vertex_keys_ && c.shift_only()) {
+      const std::uint64_t* plain = plain_keys(nv, partitions);
+      const std::uint64_t shift = c.transform.shift;
+      const int chunks = chunk_count(nv, partitions);
+      for_each_chunk(chunks, [&](int k) {
+        const std::size_t end = chunk_begin(nv, chunks, k + 1);
+        for(std::size_t v = chunk_begin(nv, chunks, k); v < end; ++v)
+          partition_of_vertex_[v] = partition_of_key((plain[v] + shift) & Attempt_curve::key_mask, first_key);
+      });
+      return;
+    }
     std::vector<Vertex_range> by_key;
     std::vector<Vertex_range> computed;
     if(c.shift_only()) {
@@ -584,7 +609,7 @@ private:
     if(attempt == 0) choose_first_cut(points, partitions, rotated);
     const Attempt_curve keys(lo_, hi_, transform_for(attempt, partitions, 3 * Attempt_curve::bits));
     Attempt_cut plan = rotated ? cut_rotated(m_, points, partitions, keys)
-                               : cut_by_sorting(m_, points, partitions, keys);
+                               : cut_by_sorting(m_, points, partitions, keys, kept_keys(points, keys, partitions));
     const std::vector<Vertex_id>& sorted = plan.sorted;
     const std::vector<std::size_t>& cut = plan.cut;
     assign_vertex_partitions(mesh_vertex_end(points), partitions, keys, plan.first_key);
@@ -647,6 +672,32 @@ private:
     resize_cell_arrays(next_fresh[partitions - 1]);
   }
 
+  // The kept plain keys of the vertex ids below nv, computed on
+  // `threads` threads where missing.
+  const std::uint64_t* plain_keys(std::size_t nv, int threads)
+  {
+    const std::size_t first = vertex_keys_.size();
+    if(first < nv) {
+      const Attempt_curve plain(lo_, hi_, Curve_transform());
+      vertex_keys_.resize(nv);
+      const std::size_t n = nv - first;
+      const int chunks = chunk_count(n, threads);
+      for_each_chunk(chunks, [&](int k) {
+        const std::size_t end = first + chunk_begin(n, chunks, k + 1);
+        for(std::size_t v = first + chunk_begin(n, chunks, k); v < end; ++v)
+          vertex_keys_[v] = plain.plain_key(m_.point(Vertex_id(v)));
+      });
+    }
+    return vertex_keys_.data();
+  }
+
+  // The kept keys for cut_by_sorting of `points` on curve c, or null.
+  const std::uint64_t* kept_keys(const std::vector<Vertex_id>& points, const Attempt_curve& c, int threads)
+  {
+    if(!keep_vertex_keys_ || !c.shift_only()) return nullptr;
+    return plain_keys(mesh_vertex_end(points), threads);
+  }
+
   static Vertex_id largest_id(const std::vector<Vertex_id>& points)
   {
     return points.empty() ? Vertex_id(0) : *std::max_element(points.begin(), points.end());
@@ -694,6 +745,8 @@ private:
   std::size_t min_points_per_partition_ = default_min_points_per_partition;
   std::vector<std::uint8_t> partition_of_vertex_;
   std::vector<Vertex_range> sorted_runs_;
+  bool keep_vertex_keys_ = false;
+  std::vector<std::uint64_t> vertex_keys_; // see keep_vertex_keys()
   std::function<void(std::size_t)> progress_;
   std::size_t settled_ = 0; // points of the current insert() settled
 };

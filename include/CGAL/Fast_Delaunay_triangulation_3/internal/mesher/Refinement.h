@@ -57,6 +57,10 @@ struct Refinement_options
   int threads = 1;
   // Fewer points per partition halve the partitions (§3.4's 3000).
   std::size_t min_points_per_thread = Partitioned_insertion::default_min_points_per_partition;
+  // The engine keeps every vertex's curve key for a batch's attempts
+  // (Partitioned_insertion::keep_vertex_keys); off, each attempt computes
+  // them again: the same partitions, hence the same mesh (a test compares).
+  bool keep_vertex_keys = true;
 };
 
 struct Refinement_pass
@@ -582,6 +586,7 @@ private:
     Partitioned_insertion engine(m, cm_.filter, Sub_determinant_filter(), cm_.box_lo, cm_.box_hi, 0, false);
     engine.set_vertices_in_mesh(first_new);
     engine.set_min_points_per_partition(options_.min_points_per_thread);
+    if(options_.keep_vertex_keys) engine.keep_vertex_keys(); // it lives for this batch: no vertex moves
     std::vector<Vertex_id> duplicate_of(points.size(), ghost_vertex); // never written: no duplicate result
     Tet_id hint = m.first_live_tet();
     Kernel_statistics stats;
