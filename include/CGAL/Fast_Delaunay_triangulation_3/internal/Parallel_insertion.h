@@ -233,8 +233,8 @@ public:
   // shifted (both first attempts of 2 partitions, the first of more): the
   // caller promises that no record moves meanwhile.  Without sorted runs,
   // each such attempt computed the key of every mesh vertex, three times
-  // for the first (the refinement's batches on bunny00: 13-17 ms of the
-  // first attempt, before its tasks).
+  // for the first (choose_first_cut's two cuts, then the chosen one): on
+  // bunny00's refinement, 0.03 s of its 0.59 s insertion on 2 threads.
   void keep_vertex_keys() { keep_vertex_keys_ = true; }
   // Called with the points of insert()'s call settled so far: after every
   // attempt, and every progress_step points of the sequential finish and of
