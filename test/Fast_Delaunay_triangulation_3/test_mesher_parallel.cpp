@@ -8,12 +8,13 @@
 // count close to the sequential one, and the same mesh twice for the same
 // thread count.  The inputs are small (this file also runs under
 // ThreadSanitizer), so the partitions' threshold is lowered for the
-// partitioned attempts to run at all, and every test asserts they did.
-// FILTERPOINTS' runs (one per thread) on 34,000 points against the
-// greedy filter; the engine's kept vertex keys against keys computed at
-// every attempt.  The boundary recovery's threads (the region's search, our flips beside
-// TetGen's calls, the checks of the replacements, the facet look-ups) on
-// CGAL's fandisk: the same mesh and flags as one thread's.
+// partitioned attempts to run at all, and every meshing test asserts they
+// did.  The engine's kept vertex keys against keys computed at every
+// attempt.  FILTERPOINTS' runs (one per thread) on 70,000 points against
+// the greedy filter.  The boundary recovery's threads (the region's
+// search, our flips beside TetGen's calls, the checks of the
+// replacements, the facet look-ups) on CGAL's fandisk: the same mesh and
+// flags as one thread's.
 
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
@@ -206,7 +207,8 @@ TEST(ParallelRefinement, KeptVertexKeysGiveTheSameMesh)
     std::vector<std::array<double, 3>> points;
     std::vector<std::array<fi::Vertex_id, 4>> tets;
     const fi::Flat_storage& m = cm.mesh;
-    for(fi::Vertex_id v = 0; v < m.vertices.size(); ++v) points.push_back({m.point(v)[0], m.point(v)[1], m.point(v)[2]});
+    for(fi::Vertex_id v = 0; v < m.vertices.size(); ++v)
+      points.push_back({m.point(v)[0], m.point(v)[1], m.point(v)[2]});
     for(fi::Tet_id t = 0; t < m.number_of_slots(); ++t)
       if(m.is_live(t)) tets.push_back({m.vertex(t, 0), m.vertex(t, 1), m.vertex(t, 2), m.vertex(t, 3)});
     return std::make_pair(points, tets);
@@ -227,10 +229,10 @@ TEST(ParallelRefinement, KeptVertexKeysGiveTheSameMesh)
 // that each keep a share, and only their borders lose a few points.
 TEST(ParallelRefinement, FilterKeepsTheSpacingOnEveryRun)
 {
-  const double ratio = 0.7;
+  const double ratio = 0.7, largest_h = 0.16;
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> unit(0, 1), size(0.08, 0.16);
-  std::vector<fm::Refinement_point> points(34000);
+  std::uniform_real_distribution<double> unit(0, 1), size(0.08, largest_h);
+  std::vector<fm::Refinement_point> points(70000);
   for(fm::Refinement_point& r : points) {
     for(double& x : r.p) x = unit(random);
     r.h = size(random);
@@ -239,36 +241,46 @@ TEST(ParallelRefinement, FilterKeepsTheSpacingOnEveryRun)
   // Slabs along x: each run a compact region, as runs of the curve are.
   std::sort(points.begin(), points.end(),
             [](const fm::Refinement_point& a, const fm::Refinement_point& b) { return a.p[0] < b.p[0]; });
-  ASSERT_EQ(fi::chunk_count(points.size(), 4), 2); // 34,000 points make two runs at most
+  ASSERT_EQ(fi::chunk_count(points.size(), 2), 2);
+  ASSERT_EQ(fi::chunk_count(points.size(), 4), 4);
   auto too_close = [ratio](const fm::Refinement_point& earlier, const fm::Refinement_point& later) {
     return fm::distance(earlier.p, later.p) < ratio * later.h;
   };
-  std::vector<std::size_t> greedy; // indices into points
-  for(std::size_t i = 0; i < points.size(); ++i) {
-    bool keep = true;
-    for(std::size_t k = 0; k < greedy.size() && keep; ++k) keep = !too_close(points[greedy[k]], points[i]);
-    if(keep) greedy.push_back(i);
-  }
-  ASSERT_GT(greedy.size(), 500u);
+  // Whether a point of `kept` (in x order) is too close to r: only those
+  // within the largest radius along x can be.
+  auto has_close = [&](const std::vector<fm::Refinement_point>& kept, std::size_t end,
+                       const fm::Refinement_point& r) {
+    for(std::size_t k = end; k-- > 0 && kept[k].p[0] > r.p[0] - ratio * largest_h;)
+      if(too_close(kept[k], r)) return true;
+    return false;
+  };
+  std::vector<fm::Refinement_point> greedy;
+  for(const fm::Refinement_point& r : points)
+    if(!has_close(greedy, greedy.size(), r)) greedy.push_back(r);
+  ASSERT_GT(greedy.size(), 1000u);
+  auto same = [](const fm::Refinement_point& a, const fm::Refinement_point& b) {
+    return a.h == b.h && a.p[0] == b.p[0] && a.p[1] == b.p[1] && a.p[2] == b.p[2];
+  };
   for(int threads : {1, 2, 4}) {
     SCOPED_TRACE(threads);
     std::vector<fm::Refinement_point> kept = points;
     fm::filter_points(kept, ratio, threads);
-    // A subsequence of the input, in its order (the sizes tell the points apart).
+    // A subsequence of the input, in its order.
     std::size_t at = 0;
-    std::vector<std::size_t> index;
     for(const fm::Refinement_point& r : kept) {
-      while(at < points.size() && points[at].h != r.h) ++at;
+      while(at < points.size() && !same(points[at], r)) ++at;
       ASSERT_LT(at, points.size());
-      index.push_back(at++);
+      ++at;
     }
-    for(std::size_t j = 0; j < kept.size(); ++j)
-      for(std::size_t i = 0; i < j; ++i) ASSERT_FALSE(too_close(kept[i], kept[j])) << i << " " << j;
+    for(std::size_t j = 0; j < kept.size(); ++j) ASSERT_FALSE(has_close(kept, j, kept[j])) << j;
+    const bool as_greedy = kept.size() == greedy.size() && std::equal(kept.begin(), kept.end(), greedy.begin(), same);
     if(threads == 1) {
-      EXPECT_EQ(index, greedy);
+      EXPECT_TRUE(as_greedy);
     } else {
-      EXPECT_NE(index, greedy);
-      EXPECT_GT(kept.size(), greedy.size() * 95 / 100);
+      EXPECT_FALSE(as_greedy);
+      // Measured: 2.3% fewer in 2 runs, 7.9% in 4 (slabs of the cube a
+      // quarter wide, under 3 radii: mostly border).
+      EXPECT_GT(kept.size(), greedy.size() * 90 / 100);
       EXPECT_LE(kept.size(), greedy.size() * 103 / 100);
     }
   }

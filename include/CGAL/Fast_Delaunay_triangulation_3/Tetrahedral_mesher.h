@@ -125,8 +125,8 @@ struct Mesher_statistics
   bool whole_surface_to_tetgen = false;        // the local recovery failed, TetGen took everything
   std::size_t steiner_points = 0;    // added by the recovery, inside the volumes
   int refinement_passes = 0;
-  // Parts of refinement_seconds: SAMPLEPOINTS, FILTERPOINTS (sequential) and
-  // INSERTPOINTS (the partitioned engine).
+  // Parts of refinement_seconds: SAMPLEPOINTS, FILTERPOINTS (one run per
+  // thread) and INSERTPOINTS (the partitioned engine).
   double sample_seconds = 0, filter_seconds = 0, insert_seconds = 0;
   std::size_t refinement_points = 0, filtered_points = 0, aborted_points = 0;
   // Refinement points inserted or dropped by attempts with several

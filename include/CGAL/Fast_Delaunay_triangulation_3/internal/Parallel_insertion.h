@@ -185,7 +185,8 @@ public:
       // A retry pays a fixed price proportional to the vertex keys it computes
       // (every mesh vertex's, unless sorted runs spare them) and gains at most
       // a share of its few points' insertion time: past this ratio the
-      // sequential finish is faster.
+      // sequential finish is faster.  Kept keys (keep_vertex_keys) are
+      // charged as if computed, so that keeping them never changes a mesh.
       const bool rotated = partitions > 1 && rotation_of_sorted_run(points, attempt, partitions);
       if(attempt > 0 && partitions > 1 && points.size() * retry_mesh_ratio < keys_to_compute(points, rotated))
         partitions = 1;
@@ -545,6 +546,7 @@ private:
   {
     partition_of_vertex_.resize(m_.vertices.size());
     if(keep_vertex_keys_ && c.shift_only()) {
+      CGAL_assertion(sorted_runs_.empty()); // kept keys stand in for the runs' searches
       const std::uint64_t* plain = plain_keys(nv, partitions);
       const std::uint64_t shift = c.transform.shift;
       const int chunks = chunk_count(nv, partitions);
