@@ -549,10 +549,8 @@ private:
       CGAL_assertion(sorted_runs_.empty()); // kept keys stand in for the runs' searches
       const std::uint64_t* plain = plain_keys(nv, partitions);
       const std::uint64_t shift = c.transform.shift;
-      const int chunks = chunk_count(nv, partitions);
-      for_each_chunk(chunks, [&](int k) {
-        const std::size_t end = chunk_begin(nv, chunks, k + 1);
-        for(std::size_t v = chunk_begin(nv, chunks, k); v < end; ++v)
+      for_each_range(nv, partitions, [&](std::size_t begin, std::size_t end) {
+        for(std::size_t v = begin; v < end; ++v)
           partition_of_vertex_[v] = partition_of_key((plain[v] + shift) & Attempt_curve::key_mask, first_key);
       });
       return;
@@ -682,11 +680,8 @@ private:
     if(first < nv) {
       const Attempt_curve plain(lo_, hi_, Curve_transform());
       vertex_keys_.resize(nv);
-      const std::size_t n = nv - first;
-      const int chunks = chunk_count(n, threads);
-      for_each_chunk(chunks, [&](int k) {
-        const std::size_t end = first + chunk_begin(n, chunks, k + 1);
-        for(std::size_t v = first + chunk_begin(n, chunks, k); v < end; ++v)
+      for_each_range(nv - first, threads, [&](std::size_t begin, std::size_t end) {
+        for(std::size_t v = first + begin; v < first + end; ++v)
           vertex_keys_[v] = plain.plain_key(m_.point(Vertex_id(v)));
       });
     }

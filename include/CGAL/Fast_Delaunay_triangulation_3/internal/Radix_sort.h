@@ -87,6 +87,15 @@ void for_each_chunk(int chunks, const Function& f)
     f(c);
 }
 
+// Calls f(begin, end) for the contiguous ranges that cut [0, n) into
+// chunk_count(n, num_threads) chunks, as for_each_chunk runs them.
+template <class Function>
+void for_each_range(std::size_t n, int num_threads, const Function& f)
+{
+  const int chunks = chunk_count(n, num_threads);
+  for_each_chunk(chunks, [&](int c) { f(chunk_begin(n, chunks, c), chunk_begin(n, chunks, c + 1)); });
+}
+
 namespace radix_detail {
 
 constexpr std::size_t insertion_sort_limit = 64;

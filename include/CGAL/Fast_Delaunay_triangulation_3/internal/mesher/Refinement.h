@@ -36,6 +36,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Sizing.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -397,7 +398,7 @@ inline void filter_points(std::vector<Refinement_point>& points, double min_edge
   const std::size_t at = std::min(radii.size() - 1, radii.size() * 9 / 10);
   std::nth_element(radii.begin(), radii.begin() + at, radii.end());
   const Filter_cells cells{3 * radii[at]};
-  const int runs = chunk_count(points.size(), std::max(1, threads));
+  const int runs = chunk_count(points.size(), threads);
   std::vector<Filter_cell_lists> grids(runs);
   std::vector<std::vector<Refinement_point>> kept(runs);
   for_each_chunk(runs, [&](int c) {
@@ -466,16 +467,13 @@ public:
 private:
   std::size_t count_volume_tetrahedra() const
   {
-    const std::size_t slots = cm_.mesh.number_of_slots();
-    const int chunks = chunk_count(slots, std::max(1, options_.threads));
-    std::vector<std::size_t> counts(chunks, 0);
-    for_each_chunk(chunks, [&](int c) {
-      const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
-      for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t)
-        counts[c] += cm_.mesh.is_live(t) && cm_.subdomain[t] > 0 ? 1 : 0;
+    std::atomic<std::size_t> n(0);
+    for_each_range(cm_.mesh.number_of_slots(), options_.threads, [&](std::size_t begin, std::size_t end) {
+      std::size_t here = 0;
+      for(Tet_id t = static_cast<Tet_id>(begin); t < end; ++t)
+        here += cm_.mesh.is_live(t) && cm_.subdomain[t] > 0 ? 1 : 0;
+      n += here;
     });
-    std::size_t n = 0;
-    for(std::size_t k : counts) n += k;
     return n;
   }
 
@@ -555,18 +553,14 @@ private:
     const Moore_grid grid(cm_.box_lo, cm_.box_hi, moore_bits_per_axis(points.size()));
     const Moore_curve curve(grid.bits_per_axis());
     std::vector<Key_value<std::uint32_t>> keyed(points.size()), scratch;
-    const int chunks = chunk_count(points.size(), std::max(1, options_.threads));
-    for_each_chunk(chunks, [&](int c) {
-      const std::size_t end = chunk_begin(points.size(), chunks, c + 1);
-      for(std::size_t i = chunk_begin(points.size(), chunks, c); i < end; ++i)
-        keyed[i] = {grid.key(curve, points[i].p), static_cast<std::uint32_t>(i)};
+    for_each_range(points.size(), options_.threads, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i) keyed[i] = {grid.key(curve, points[i].p), static_cast<std::uint32_t>(i)};
     });
     // Stable: points with one key keep their sampling order.
     radix_sort(keyed, scratch, 3 * grid.bits_per_axis(), std::max(1, options_.threads));
     std::vector<Refinement_point> sorted(points.size());
-    for_each_chunk(chunks, [&](int c) {
-      const std::size_t end = chunk_begin(points.size(), chunks, c + 1);
-      for(std::size_t i = chunk_begin(points.size(), chunks, c); i < end; ++i) sorted[i] = points[keyed[i].value];
+    for_each_range(points.size(), options_.threads, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i) sorted[i] = points[keyed[i].value];
     });
     points.swap(sorted);
   }
@@ -634,11 +628,8 @@ private:
     if(next == first_new + n) return;
     m.vertices.resize(next);
     cm_.size.resize(next);
-    const std::size_t slots = m.number_of_slots();
-    const int chunks = chunk_count(slots, std::max(1, options_.threads));
-    for_each_chunk(chunks, [&](int c) {
-      const Tet_id end = static_cast<Tet_id>(chunk_begin(slots, chunks, c + 1));
-      for(Tet_id t = static_cast<Tet_id>(chunk_begin(slots, chunks, c)); t < end; ++t) {
+    for_each_range(m.number_of_slots(), options_.threads, [&](std::size_t begin, std::size_t end) {
+      for(Tet_id t = static_cast<Tet_id>(begin); t < end; ++t) {
         if(!m.is_live(t)) continue;
         Vertex_id* tv = m.vertex_ids(t);
         for(int i = 0; i < 4; ++i)
