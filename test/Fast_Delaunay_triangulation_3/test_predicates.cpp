@@ -125,7 +125,8 @@ P::Static_filter tight_static_filter(const std::array<Coordinates, N>& points)
 }
 
 // Magnitudes of the coordinates (and of their differences): ordinary, far
-// beyond the filters' limits, and just inside and outside each limit.
+// beyond the filters' limits, just inside and outside each limit, and where
+// products of five differences are subnormal (1e-62).
 struct Frame
 {
   double scale, offset;
@@ -134,7 +135,7 @@ struct Frame
 std::vector<Frame> frames()
 {
   return {{1, 0},      {1e-120, 0}, {1e120, 0},  {1e-99, 0}, {1e-96, 0}, {1e101, 0}, {1e103, 0},
-          {1e-60, 0},  {1e-57, 0},  {1e60, 0},   {1e62, 0},  {1, 1e15},  {1e-3, 1e8}, {1e-300, 0}};
+          {1e-60, 0},  {1e-57, 0},  {1e-62, 0},  {1e60, 0},   {1e62, 0},  {1, 1e15},  {1e-3, 1e8}, {1e-300, 0}};
 }
 
 std::string describe(const Frame& f)
@@ -273,7 +274,8 @@ TEST(Side_of_oriented_sphere, SignOfCgalsExactPredicate)
 // AVX2, a vectorised determinant): with any scratch word beside the
 // coordinates (zero, small integers read as denormals, all ones read as a
 // NaN) it must decide as the scalar test on random, nearly cospherical and
-// exactly cospherical points, at every scale, with and without the static stage.
+// exactly cospherical points, at every scale (the record test's per-call
+// bound at the limits of its range too), with and without the static filter.
 TEST(Side_of_oriented_sphere, RecordConflictTestAsScalarOne)
 {
   Generator g(31);
@@ -745,6 +747,13 @@ TEST(Filter_bounds, ConstantsCoverTheirDerivation)
   EXPECT_GE(static_cast<long double>(P::Filter_bounds::in_sphere), in_sphere);
   EXPECT_LT(static_cast<long double>(P::Filter_bounds::orientation) / orientation - 1, 1e-4L);
   EXPECT_LT(static_cast<long double>(P::Filter_bounds::in_sphere) / in_sphere - 1, 1e-4L);
+  // The cavity search's bound in the largest difference M: mx my mz L <= 3 M^5.
+  EXPECT_GE(static_cast<long double>(P::Filter_bounds::in_sphere_of_largest), 3 * in_sphere);
+  EXPECT_LT(static_cast<long double>(P::Filter_bounds::in_sphere_of_largest) / (3 * in_sphere) - 1, 1e-4L);
+  // Its underflow term: under 64 products, each off by 2^-1075 times at most 6 in_sphere_max^3.
+  const long double largest = P::Filter_bounds::in_sphere_max;
+  EXPECT_GE(static_cast<long double>(P::Filter_bounds::in_sphere_underflow),
+            64 * std::ldexp(1.0L, -1075) * 6 * largest * largest * largest);
 }
 
 // The double-double stage, alone: never a sign other than the exact one, 0 on

@@ -152,6 +152,15 @@ struct Filter_bounds
   // above is no longer valid: the exact stage decides.
   static constexpr double orientation_min = 1e-97, orientation_max = 1e102;
   static constexpr double in_sphere_min = 1e-58, in_sphere_max = 1e61;
+  // The cavity search's per-call in-sphere bound, in the largest difference
+  // M alone: mx my mz L <= 3 M^5, so 3 * 384 eps (rounded up).  Instead of
+  // a lower limit it adds an absolute term for underflow: with every
+  // difference below in_sphere_max, nothing overflows, and a product that
+  // underflows is off by at most 2^-1075, which the later products multiply
+  // by at most 6 max(1, M)^3 < 6e183; either form of the determinant rounds
+  // fewer than 64 products, so together they are off by less than 1e-138.
+  static constexpr double in_sphere_of_largest = 1.2791e-13; // 1152 eps = 1.27898e-13
+  static constexpr double in_sphere_underflow = 1e-137;
   // The double-double stage of side_of_oriented_sphere: the same analysis
   // with exact differences and a unit roundoff of 5 eps^2 per operation
   // (Joldes, Muller, Popescu 2017: at most 4 eps^2 for a product, 3 eps^2 /
@@ -330,6 +339,26 @@ CGAL_FDT3_TARGET_AVX2 inline __m256d consecutive_triple_minors(const Columns& q)
   return _mm256_fmadd_pd(z2, m1, _mm256_fmsub_pd(q.z, _mm256_permute4x64_pd(m1, next), _mm256_mul_pd(z1, m2)));
 }
 
+CGAL_FDT3_TARGET_AVX2 inline double in_sphere_determinant_of_columns(const Columns& q)
+{
+  const __m256d lift = _mm256_fmadd_pd(q.z, q.z, _mm256_fmadd_pd(q.y, q.y, _mm256_mul_pd(q.x, q.x)));
+  const __m256d triples = consecutive_triple_minors(q);
+  // det = (blift cda + dlift abc) - (alift bcd + clift dab).
+  const __m256d terms = _mm256_mul_pd(lift, _mm256_permute4x64_pd(triples, next));
+  const __m128d pairs = _mm_add_pd(_mm256_castpd256_pd128(terms), _mm256_extractf128_pd(terms, 1));
+  return _mm_cvtsd_f64(_mm_unpackhi_pd(pairs, pairs)) - _mm_cvtsd_f64(pairs);
+}
+
+// The largest absolute coordinate of the Columns.
+CGAL_FDT3_TARGET_AVX2 inline double largest_of_columns(const Columns& q)
+{
+  const __m256d sign = _mm256_set1_pd(-0.0);
+  const __m256d m = _mm256_max_pd(_mm256_andnot_pd(sign, q.x),
+                                  _mm256_max_pd(_mm256_andnot_pd(sign, q.y), _mm256_andnot_pd(sign, q.z)));
+  const __m128d h = _mm_max_pd(_mm256_castpd256_pd128(m), _mm256_extractf128_pd(m, 1));
+  return _mm_cvtsd_f64(_mm_max_sd(h, _mm_unpackhi_pd(h, h)));
+}
+
 } // namespace simd_records
 
 // in_sphere_determinant(a, b, c, d, t) for vertex records a, b, c, d.
@@ -337,13 +366,7 @@ CGAL_FDT3_TARGET_AVX2 inline double in_sphere_determinant_of_records(const doubl
                                                const double* d, const double* t)
 {
   using namespace simd_records;
-  const Columns q = columns_relative_to(a, b, c, d, t);
-  const __m256d lift = _mm256_fmadd_pd(q.z, q.z, _mm256_fmadd_pd(q.y, q.y, _mm256_mul_pd(q.x, q.x)));
-  const __m256d triples = consecutive_triple_minors(q);
-  // det = (blift cda + dlift abc) - (alift bcd + clift dab).
-  const __m256d terms = _mm256_mul_pd(lift, _mm256_permute4x64_pd(triples, next));
-  const __m128d pairs = _mm_add_pd(_mm256_castpd256_pd128(terms), _mm256_extractf128_pd(terms, 1));
-  return _mm_cvtsd_f64(_mm_unpackhi_pd(pairs, pairs)) - _mm_cvtsd_f64(pairs);
+  return in_sphere_determinant_of_columns(columns_relative_to(a, b, c, d, t));
 }
 
 // Lane f: orientation_determinant of the tetrahedron (a, b, c, d) of vertex
@@ -715,14 +738,24 @@ inline int side_of_oriented_sphere(const double* p, const double* q, const doubl
 
 // A first, static stage in front of the per-call bounds above: the same error
 // bounds evaluated once with the extent of a bounding box, which bounds every
-// coordinate difference of points inside it.  Saves the per-call maxima on
-// the hot path; a determinant below the static bound falls through to the
-// per-call stage (clustered inputs do, because their local determinants are
-// tiny compared with the box).  No global state: the kernel owns its copy.
+// coordinate difference of points inside it.  Saves the per-call maxima where
+// they cost more than they save; a determinant below the static bound falls
+// through to the per-call stage.  The cavity search's conflict test does not
+// use the static in-sphere bound: points near a surface or in clusters make
+// tetrahedra thousands of times smaller than the box, whose determinants fall
+// below it (a quarter of a 1e6-point shell's cavity time went to those falls
+// and their mispredicted branches), so it computes the per-call bound beside
+// the determinant (Filter_bounds::in_sphere_of_largest).  The box still
+// decides whether that bound is valid: it bounds the differences from above.
+// No global state: the kernel owns its copy.
 struct Static_filter
 {
   double orientation = std::numeric_limits<double>::infinity();
   double in_sphere = std::numeric_limits<double>::infinity();
+  // The absolute term of the per-call in-sphere bound:
+  // Filter_bounds::in_sphere_underflow inside a box whose widths are below
+  // in_sphere_max, infinite (every test to the later stages) outside.
+  double in_sphere_underflow = std::numeric_limits<double>::infinity();
 
   static Static_filter for_box(const double lo[3], const double hi[3])
   {
@@ -738,6 +771,7 @@ struct Static_filter
     if(smallest > Filter_bounds::in_sphere_min && largest < Filter_bounds::in_sphere_max)
       f.in_sphere = Filter_bounds::in_sphere * (w[0] * w[1] * w[2]) *
                     (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * (1.0 + 1e-12);
+    if(largest < Filter_bounds::in_sphere_max) f.in_sphere_underflow = Filter_bounds::in_sphere_underflow;
     return f;
   }
 };
@@ -887,36 +921,37 @@ inline int perturbed_coplanar_side_of_bounded_circle(const double* p0, const dou
 }
 
 // Conflict test of a finite tetrahedron (positively oriented a, b, c, d).
-// Only the static stage is inline: the cavity search runs it ~45 times per
-// point, and keeping the rare later stages in a separate function spares
-// this path their register saves and lets it be inlined into the search.
+// Only the first stage (static bound, or per-call bound in the cavity
+// search) is inline: the cavity search runs it ~45 times per point, and
+// keeping the rare later stages in a separate function spares this path
+// their register saves and lets it be inlined into the search.
 template <class Paths>
-inline bool finite_cell_in_conflict_after_static_stage(double det, const double* a, const double* b, const double* c,
-                                                       const double* d, const double* p)
+inline bool finite_cell_in_conflict_after_first_stage(double det, const double* a, const double* b, const double* c,
+                                                      const double* d, const double* p)
 {
   const int side = side_of_oriented_sphere_from<Paths>(det, a, b, c, d, p);
   if(side != 0) return side > 0;
   return perturbed_tie_break(a, b, c, d, p) > 0;
 }
 
-__attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_static_stage(
+__attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_first_stage(
     double det, const double* a, const double* b, const double* c, const double* d, const double* p)
 {
-  return finite_cell_in_conflict_after_static_stage<Default_paths>(det, a, b, c, d, p);
+  return finite_cell_in_conflict_after_first_stage<Default_paths>(det, a, b, c, d, p);
 }
 
 // The same for the two forms of finite_record_in_conflict.
-__attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_static_stage_scalar(
+__attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_first_stage_scalar(
     double det, const double* a, const double* b, const double* c, const double* d, const double* p)
 {
-  return finite_cell_in_conflict_after_static_stage<Scalar_paths>(det, a, b, c, d, p);
+  return finite_cell_in_conflict_after_first_stage<Scalar_paths>(det, a, b, c, d, p);
 }
 
 #ifdef CGAL_FDT3_SIMD_RECORDS
-__attribute__((noinline)) CGAL_FDT3_TARGET_AVX2 inline bool finite_cell_in_conflict_beyond_static_stage_avx2(
+__attribute__((noinline)) CGAL_FDT3_TARGET_AVX2 inline bool finite_cell_in_conflict_beyond_first_stage_avx2(
     double det, const double* a, const double* b, const double* c, const double* d, const double* p)
 {
-  return finite_cell_in_conflict_after_static_stage<Avx2_paths>(det, a, b, c, d, p);
+  return finite_cell_in_conflict_after_first_stage<Avx2_paths>(det, a, b, c, d, p);
 }
 #endif
 
@@ -946,15 +981,20 @@ CGAL_FDT3_TARGET_AVX2 inline bool finite_record_in_conflict_avx2(const double* a
                                                                  const double* d, const double* p,
                                                                  const Static_filter& filter)
 {
-  const double det = in_sphere_determinant_of_records(a, b, c, d, p);
-  if(__builtin_expect(!beyond_bound(det, filter.in_sphere), 0))
-    return finite_cell_in_conflict_beyond_static_stage_avx2(det, a, b, c, d, p);
+  using namespace simd_records;
+  const Columns q = columns_relative_to(a, b, c, d, p);
+  const double det = in_sphere_determinant_of_columns(q);
+  const double largest = largest_of_columns(q), square = largest * largest;
+  const double bound = Filter_bounds::in_sphere_of_largest * (square * square * largest) + filter.in_sphere_underflow;
+  if(__builtin_expect(!beyond_bound(det, bound), 0))
+    return finite_cell_in_conflict_beyond_first_stage_avx2(det, a, b, c, d, p);
   return sign_bit(det);
 }
 #endif
 
 // finite_cell_in_conflict in the cavity search's form: the sign returned as
-// data, with the vectorised determinant for Avx2_paths.
+// data, with the vectorised determinant for Avx2_paths, and the per-call
+// bound as the first stage (see Static_filter).
 template <class Paths = Default_paths>
 inline bool finite_record_in_conflict(const double* a, const double* b, const double* c,
                                       const double* d, const double* p, const Static_filter& filter)
@@ -963,8 +1003,13 @@ inline bool finite_record_in_conflict(const double* a, const double* b, const do
   if constexpr(Paths::avx2) return finite_record_in_conflict_avx2(a, b, c, d, p, filter);
 #endif
   const double det = in_sphere_determinant(a, b, c, d, p);
-  if(__builtin_expect(!beyond_bound(det, filter.in_sphere), 0))
-    return finite_cell_in_conflict_beyond_static_stage_scalar(det, a, b, c, d, p);
+  const double* const others[4] = {a, b, c, d};
+  double m[3];
+  max_differences(p, others, m);
+  const double largest = std::max(std::max(m[0], m[1]), m[2]), square = largest * largest;
+  const double bound = Filter_bounds::in_sphere_of_largest * (square * square * largest) + filter.in_sphere_underflow;
+  if(__builtin_expect(!beyond_bound(det, bound), 0))
+    return finite_cell_in_conflict_beyond_first_stage_scalar(det, a, b, c, d, p);
   return sign_bit(det);
 }
 
@@ -976,13 +1021,13 @@ inline bool finite_cell_in_conflict(const double* a, const double* b, const doub
   const double det = in_sphere_determinant(a, b, c, d, p);
   if(det < -filter.in_sphere) return true;
   if(det > filter.in_sphere) return false;
-  return finite_cell_in_conflict_beyond_static_stage(det, a, b, c, d, p);
+  return finite_cell_in_conflict_beyond_first_stage(det, a, b, c, d, p);
 }
 
 // Conflict test of a ghost tetrahedron (a, b, c, infinite): its "sphere" is
 // the open half-space beyond the hull facet a, b, c, closed by CGAL's
 // perturbed in-circle test inside the facet's plane.
-__attribute__((noinline)) inline bool ghost_cell_in_conflict_beyond_static_stage(
+__attribute__((noinline)) inline bool ghost_cell_in_conflict_beyond_first_stage(
     const double* a, const double* b, const double* c, const double* p)
 {
   const int o = orientation(a, b, c, p);
@@ -995,7 +1040,7 @@ inline bool ghost_cell_in_conflict(const double* a, const double* b, const doubl
 {
   const double det = orientation_determinant(a, b, c, p);
   if(__builtin_expect(!beyond_bound(det, filter.orientation), 0))
-    return ghost_cell_in_conflict_beyond_static_stage(a, b, c, p);
+    return ghost_cell_in_conflict_beyond_first_stage(a, b, c, p);
   return !sign_bit(det);
 }
 
