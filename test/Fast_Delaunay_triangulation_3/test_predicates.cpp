@@ -2,7 +2,9 @@
 //  - orientation and side_of_oriented_sphere, without and with the static
 //    (bounding box) filter stage, have the sign of Epick's exact predicates
 //    on random, nearly degenerate (1 ulp off a plane or a sphere), grid,
-//    offset and scaled inputs, scales around the filters' limits included;
+//    offset and scaled inputs, scales around the filters' limits included,
+//    and so does the cavity's conflict test on vertex records, with its
+//    bound from the test's own points;
 //  - the filtered in-circle test of coplanar points has the sign of Epick's
 //    exact one on exactly coplanar lattice points, cocircular ones included;
 //  - the perturbed in-sphere and in-circle tests equal
@@ -125,8 +127,9 @@ P::Static_filter tight_static_filter(const std::array<Coordinates, N>& points)
 }
 
 // Magnitudes of the coordinates (and of their differences): ordinary, far
-// beyond the filters' limits, just inside and outside each limit, and where
-// products of five differences are subnormal (1e-62).
+// beyond the filters' limits, just inside and outside each limit, where
+// products of five differences are subnormal (1e-62), and where the cavity
+// test's underflow term is most of its bound (1e-26).
 struct Frame
 {
   double scale, offset;
@@ -135,7 +138,8 @@ struct Frame
 std::vector<Frame> frames()
 {
   return {{1, 0},      {1e-120, 0}, {1e120, 0},  {1e-99, 0}, {1e-96, 0}, {1e101, 0}, {1e103, 0},
-          {1e-60, 0},  {1e-57, 0},  {1e-62, 0},  {1e60, 0},   {1e62, 0},  {1, 1e15},  {1e-3, 1e8}, {1e-300, 0}};
+          {1e-60, 0},  {1e-57, 0},  {1e60, 0},   {1e62, 0},  {1, 1e15},  {1e-3, 1e8}, {1e-300, 0},
+          {1e-62, 0},  {1e-26, 0}};
 }
 
 std::string describe(const Frame& f)
@@ -750,10 +754,11 @@ TEST(Filter_bounds, ConstantsCoverTheirDerivation)
   // The cavity search's bound in the largest difference M: mx my mz L <= 3 M^5.
   EXPECT_GE(static_cast<long double>(P::Filter_bounds::in_sphere_of_largest), 3 * in_sphere);
   EXPECT_LT(static_cast<long double>(P::Filter_bounds::in_sphere_of_largest) / (3 * in_sphere) - 1, 1e-4L);
-  // Its underflow term: under 64 products, each off by 2^-1075 times at most 6 in_sphere_max^3.
+  // Its underflow term: under 64 products, each off by 2^-1075 times at most 6 in_sphere_max^3 (scaled
+  // before the power of two, which a long double of double's range would flush to zero alone).
   const long double largest = P::Filter_bounds::in_sphere_max;
   EXPECT_GE(static_cast<long double>(P::Filter_bounds::in_sphere_underflow),
-            64 * std::ldexp(1.0L, -1075) * 6 * largest * largest * largest);
+            std::ldexp(64 * 6 * largest * largest * largest, -1075));
 }
 
 // The double-double stage, alone: never a sign other than the exact one, 0 on

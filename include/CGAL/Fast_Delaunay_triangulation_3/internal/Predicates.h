@@ -5,11 +5,13 @@
 // §2.4 "Implementation details"), with CGAL's symbolic perturbation so that the
 // Delaunay triangulation is unique and identical to CGAL's.
 //
-// Three stages: an inline floating-point evaluation with a semi-static error
-// bound computed from the actual coordinate differences (no global state, so
-// triangulations of different extents can live side by side), then CGAL's own
-// filtered exact predicates (interval arithmetic, then exact numbers) out of
-// line.  Perturbation follows Delaunay_triangulation_3::side_of_oriented_sphere
+// Stages: an inline floating-point evaluation with an error bound from the
+// bounding box (the cavity's in-sphere test: from its own points), a
+// semi-static bound from the actual coordinate differences (no global state,
+// so triangulations of different extents can live side by side), an exact
+// evaluation in doubles where the differences allow it, a double-double one
+// for the in-sphere test, then CGAL's own filtered exact predicates (interval
+// arithmetic, then exact numbers) out of line.  Perturbation follows Delaunay_triangulation_3::side_of_oriented_sphere
 // and coplanar_side_of_bounded_circle of CGAL 5.5: ties are broken by the
 // lexicographic order of the points, which makes the triangulation independent
 // of the insertion order.
@@ -158,8 +160,9 @@ struct Filter_bounds
   // difference below in_sphere_max, nothing overflows, and a product that
   // underflows is off by at most 2^-1075, which the later products multiply
   // by at most 6 max(1, M)^3 < 6e183; either form of the determinant rounds
-  // fewer than 64 products, so together they are off by less than 1e-138.
-  static constexpr double in_sphere_of_largest = 1.2791e-13; // 1152 eps = 1.27898e-13
+  // fewer than 64 products, so together they are off by less than 1e-137
+  // (64 * 2^-1075 * 6e183 = 9.5e-138).
+  static constexpr double in_sphere_of_largest = 1.27899e-13; // 1152 eps = 1.278977e-13
   static constexpr double in_sphere_underflow = 1e-137;
   // The double-double stage of side_of_oriented_sphere: the same analysis
   // with exact differences and a unit roundoff of 5 eps^2 per operation
@@ -339,6 +342,8 @@ CGAL_FDT3_TARGET_AVX2 inline __m256d consecutive_triple_minors(const Columns& q)
   return _mm256_fmadd_pd(z2, m1, _mm256_fmsub_pd(q.z, _mm256_permute4x64_pd(m1, next), _mm256_mul_pd(z1, m2)));
 }
 
+// in_sphere_determinant(a, b, c, d, t) from the Columns of a, b, c, d
+// relative to t.
 CGAL_FDT3_TARGET_AVX2 inline double in_sphere_determinant_of_columns(const Columns& q)
 {
   const __m256d lift = _mm256_fmadd_pd(q.z, q.z, _mm256_fmadd_pd(q.y, q.y, _mm256_mul_pd(q.x, q.x)));
@@ -360,14 +365,6 @@ CGAL_FDT3_TARGET_AVX2 inline double largest_of_columns(const Columns& q)
 }
 
 } // namespace simd_records
-
-// in_sphere_determinant(a, b, c, d, t) for vertex records a, b, c, d.
-CGAL_FDT3_TARGET_AVX2 inline double in_sphere_determinant_of_records(const double* a, const double* b, const double* c,
-                                               const double* d, const double* t)
-{
-  using namespace simd_records;
-  return in_sphere_determinant_of_columns(columns_relative_to(a, b, c, d, t));
-}
 
 // Lane f: orientation_determinant of the tetrahedron (a, b, c, d) of vertex
 // records with its vertex f replaced by t, i.e. the signed volume that t
@@ -521,7 +518,7 @@ CGAL_FDT3_DD_INLINE Number multiply(const Number& x, const Number& y)
 
 #ifdef CGAL_FDT3_SIMD_RECORDS
 // The same operations on the four lanes of AVX registers (lane i: point i of
-// p, q, r, s), arranged as in_sphere_determinant_of_records: the same minors
+// p, q, r, s), arranged as in_sphere_determinant_of_columns: the same minors
 // and sums, so the same depth and the same bound.
 namespace double_double_lanes {
 
@@ -620,7 +617,7 @@ inline int in_sphere_determinant_sign_double_double_scalar(const double* p, cons
 }
 
 #ifdef CGAL_FDT3_SIMD_RECORDS
-// The same on AVX registers, with the minors of in_sphere_determinant_of_records.
+// The same on AVX registers, with the minors of in_sphere_determinant_of_columns.
 CGAL_FDT3_TARGET_AVX2 inline int in_sphere_determinant_sign_double_double_lanes(const double* p, const double* q,
                                                                                 const double* r, const double* s,
                                                                                 const double* t, double bound)
