@@ -11,8 +11,9 @@
 // so triangulations of different extents can live side by side), an exact
 // evaluation in doubles where the differences allow it, a double-double one
 // for the in-sphere test, then CGAL's own filtered exact predicates (interval
-// arithmetic, then exact numbers) out of line.  Perturbation follows Delaunay_triangulation_3::side_of_oriented_sphere
-// and coplanar_side_of_bounded_circle of CGAL 5.5: ties are broken by the
+// arithmetic, then exact numbers) out of line.  Perturbation follows
+// Delaunay_triangulation_3::side_of_oriented_sphere and
+// coplanar_side_of_bounded_circle of CGAL 5.5: ties are broken by the
 // lexicographic order of the points, which makes the triangulation independent
 // of the insertion order.
 //
@@ -743,9 +744,9 @@ inline int side_of_oriented_sphere(const double* p, const double* q, const doubl
 // below it (56% of the tests on 1e6 points near a sphere, nearly all in 20
 // tight clusters, each then out of line after a mispredicted branch), so it
 // computes the per-call bound beside the determinant
-// (Filter_bounds::in_sphere_of_largest).  The box still
-// decides whether that bound is valid: it bounds the differences from above.
-// No global state: the kernel owns its copy.
+// (Filter_bounds::in_sphere_of_largest).  The box still decides whether that
+// bound is valid: it bounds the differences from above.  No global state:
+// the kernel owns its copy.
 struct Static_filter
 {
   double orientation = std::numeric_limits<double>::infinity();
