@@ -277,9 +277,10 @@ TEST(Side_of_oriented_sphere, SignOfCgalsExactPredicate)
 // The kernel's conflict test reads the four vertices as 32-byte records (with
 // AVX2, a vectorised determinant): with any scratch word beside the
 // coordinates (zero, small integers read as denormals, all ones read as a
-// NaN) it must decide as the scalar test on random, nearly cospherical and
-// exactly cospherical points, at every scale (the record test's per-call
-// bound at the limits of its range too), with and without the static filter.
+// NaN) it must decide as the perturbed predicate on random, nearly
+// cospherical and exactly cospherical points, at every scale (the per-call
+// bound at the limits of its range too), with and without the static
+// filter; so must the conflict test on coordinates of moves and checks.
 TEST(Side_of_oriented_sphere, RecordConflictTestAsScalarOne)
 {
   Generator g(31);
@@ -313,9 +314,12 @@ TEST(Side_of_oriented_sphere, RecordConflictTestAsScalarOne)
         std::copy(p[k].begin(), p[k].end(), records[k].xyz);
         records[k].scratch = scratch_words[(i + k) % 4];
       }
+      const bool expected =
+          P::perturbed_side_of_oriented_sphere(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()) > 0;
+      ASSERT_EQ(P::finite_cell_in_conflict(p[0].data(), p[1].data(), p[2].data(), p[3].data(), p[4].data()),
+                expected)
+          << "case " << i;
       for(const P::Static_filter& filter : {P::Static_filter(), tight_static_filter(p)}) {
-        const bool expected = P::finite_cell_in_conflict(p[0].data(), p[1].data(), p[2].data(), p[3].data(),
-                                                         p[4].data(), filter);
         // Both forms, whichever the build and the processor would choose.
         ASSERT_EQ(P::finite_record_in_conflict<P::Scalar_paths>(records[0].xyz, records[1].xyz, records[2].xyz,
                                                                 records[3].xyz, p[4].data(), filter),

@@ -177,7 +177,7 @@ private:
     if(x == ghost_vertex) return Outcome::locally_delaunay;
     const Vertex_id* tv = m.vertex_ids(t);
     const double* at[4] = {m.point(tv[0]), m.point(tv[1]), m.point(tv[2]), m.point(tv[3])};
-    if(!finite_cell_in_conflict(at[0], at[1], at[2], at[3], m.point(x), filter_)) return Outcome::locally_delaunay;
+    if(!finite_cell_in_conflict(at[0], at[1], at[2], at[3], m.point(x))) return Outcome::locally_delaunay;
 
     // t with each vertex of the facet in turn replaced by x: positively
     // oriented for all three when the segment from t's fourth vertex to x

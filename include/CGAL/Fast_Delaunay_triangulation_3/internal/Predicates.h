@@ -274,14 +274,31 @@ inline double orientation_determinant(const double* p, const double* q, const do
   return qx * (ry * sz - rz * sy) - qy * (rx * sz - rz * sx) + qz * (rx * sy - ry * sx);
 }
 
-inline double in_sphere_determinant(const double* p, const double* q, const double* r,
-                                    const double* s, const double* t)
+// The rows p - t, q - t, r - t, s - t of the in-sphere determinant.
+struct In_sphere_rows
 {
-  const double ax = p[0] - t[0], ay = p[1] - t[1], az = p[2] - t[2];
-  const double bx = q[0] - t[0], by = q[1] - t[1], bz = q[2] - t[2];
-  const double cx = r[0] - t[0], cy = r[1] - t[1], cz = r[2] - t[2];
-  const double dx = s[0] - t[0], dy = s[1] - t[1], dz = s[2] - t[2];
+  double ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz;
 
+  In_sphere_rows(const double* p, const double* q, const double* r, const double* s, const double* t)
+      : ax(p[0] - t[0]), ay(p[1] - t[1]), az(p[2] - t[2]), bx(q[0] - t[0]), by(q[1] - t[1]), bz(q[2] - t[2]),
+        cx(r[0] - t[0]), cy(r[1] - t[1]), cz(r[2] - t[2]), dx(s[0] - t[0]), dy(s[1] - t[1]), dz(s[2] - t[2])
+  {
+  }
+
+  // The largest |coordinate difference|: the per-call bound's M.
+  double largest() const
+  {
+    const double x = std::max(std::max(std::fabs(ax), std::fabs(bx)), std::max(std::fabs(cx), std::fabs(dx)));
+    const double y = std::max(std::max(std::fabs(ay), std::fabs(by)), std::max(std::fabs(cy), std::fabs(dy)));
+    const double z = std::max(std::max(std::fabs(az), std::fabs(bz)), std::max(std::fabs(cz), std::fabs(dz)));
+    return std::max(std::max(x, y), z);
+  }
+
+  double determinant() const;
+};
+
+inline double In_sphere_rows::determinant() const
+{
   const double ab = ax * by - bx * ay, bc = bx * cy - cx * by;
   const double cd = cx * dy - dx * cy, da = dx * ay - ax * dy;
   const double ac = ax * cy - cx * ay, bd = bx * dy - dx * by;
@@ -296,6 +313,12 @@ inline double in_sphere_determinant(const double* p, const double* q, const doub
   const double clift = cx * cx + cy * cy + cz * cz;
   const double dlift = dx * dx + dy * dy + dz * dz;
   return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+}
+
+inline double in_sphere_determinant(const double* p, const double* q, const double* r,
+                                    const double* s, const double* t)
+{
+  return In_sphere_rows(p, q, r, s, t).determinant();
 }
 
 #ifdef CGAL_FDT3_SIMD_RECORDS
@@ -738,15 +761,15 @@ inline int side_of_oriented_sphere(const double* p, const double* q, const doubl
 // bounds evaluated once with the extent of a bounding box, which bounds every
 // coordinate difference of points inside it.  Saves the per-call maxima where
 // they cost more than they save; a determinant below the static bound falls
-// through to the per-call stage.  The cavity search's conflict test does not
-// use the static in-sphere bound: points near a surface or in clusters make
-// tetrahedra thousands of times smaller than the box, whose determinants fall
-// below it (56% of the tests on 1e6 points near a sphere, nearly all in 20
-// tight clusters, each then out of line after a mispredicted branch), so it
-// computes the per-call bound beside the determinant
-// (Filter_bounds::in_sphere_of_largest).  The box still decides whether that
-// bound is valid: it bounds the differences from above.  No global state:
-// the kernel owns its copy.
+// through to the per-call stage.  The conflict tests do not use the static
+// in-sphere bound: points near a surface or in clusters make tetrahedra
+// thousands of times smaller than the box, whose determinants fall below it
+// (56% of the cavity's tests on 1e6 points near a sphere, nearly all in 20
+// tight clusters, each then out of line after a mispredicted branch), so
+// they compute the per-call bound beside the determinant
+// (Filter_bounds::in_sphere_of_largest).  In the cavity search the box
+// still decides whether that bound is valid: it bounds the differences from
+// above.  No global state: the kernel owns its copy.
 struct Static_filter
 {
   double orientation = std::numeric_limits<double>::infinity();
@@ -1001,25 +1024,29 @@ inline bool finite_record_in_conflict(const double* a, const double* b, const do
 #ifdef CGAL_FDT3_SIMD_RECORDS
   if constexpr(Paths::avx2) return finite_record_in_conflict_avx2(a, b, c, d, p, filter);
 #endif
-  const double det = in_sphere_determinant(a, b, c, d, p);
-  const double* const others[4] = {a, b, c, d};
-  double m[3];
-  max_differences(p, others, m);
-  const double largest = std::max(std::max(m[0], m[1]), m[2]), square = largest * largest;
+  const In_sphere_rows rows(a, b, c, d, p);
+  const double det = rows.determinant();
+  const double largest = rows.largest(), square = largest * largest;
   const double bound = Filter_bounds::in_sphere_of_largest * (square * square * largest) + filter.in_sphere_underflow;
   if(__builtin_expect(!beyond_bound(det, bound), 0))
     return finite_cell_in_conflict_beyond_first_stage_scalar(det, a, b, c, d, p);
   return sign_bit(det);
 }
 
+// The same test for every other caller (moves, validity checks), whose
+// tetrahedra are as small next to the bounding box as the cavity's: the
+// per-call bound, whose validity (every difference below
+// Filter_bounds::in_sphere_max) is checked per call, not taken from a box.
 inline bool finite_cell_in_conflict(const double* a, const double* b, const double* c,
-                                    const double* d, const double* p,
-                                    const Static_filter& filter = Static_filter())
+                                    const double* d, const double* p)
 {
-  // Shewchuk's sign: negative determinant = p inside the sphere.
-  const double det = in_sphere_determinant(a, b, c, d, p);
-  if(det < -filter.in_sphere) return true;
-  if(det > filter.in_sphere) return false;
+  const In_sphere_rows rows(a, b, c, d, p);
+  const double det = rows.determinant();
+  const double largest = rows.largest(), square = largest * largest;
+  if(largest < Filter_bounds::in_sphere_max &&
+     beyond_bound(det, Filter_bounds::in_sphere_of_largest * (square * square * largest) +
+                           Filter_bounds::in_sphere_underflow))
+    return sign_bit(det);
   return finite_cell_in_conflict_beyond_first_stage(det, a, b, c, d, p);
 }
 

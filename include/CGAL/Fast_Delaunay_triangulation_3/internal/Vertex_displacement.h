@@ -58,7 +58,7 @@ inline bool in_conflict(const Flat_storage& m, Tet_id t, const double* x, const 
 {
   const Vertex_id* tv = m.vertex_ids(t);
   if(tv[3] == ghost_vertex) return ghost_cell_in_conflict(at(tv[0]), at(tv[1]), at(tv[2]), x, filter);
-  return finite_cell_in_conflict(at(tv[0]), at(tv[1]), at(tv[2]), at(tv[3]), x, filter);
+  return finite_cell_in_conflict(at(tv[0]), at(tv[1]), at(tv[2]), at(tv[3]), x);
 }
 
 } // namespace vertex_displacement_detail
