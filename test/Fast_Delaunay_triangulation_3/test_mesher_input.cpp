@@ -17,7 +17,9 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace test_mesher_input {
 
@@ -242,6 +244,63 @@ TEST(MesherInput, ReadsOffStlObjAndSeveralFiles)
   for(const std::string& path : {off, obj, stl}) std::remove(path.c_str());
 }
 
+// The package reads ASCII OFF files itself (CGAL's reader only for other
+// headers): the same points, to the bit, and the same polygons as CGAL's
+// reader on files written in the ways the format allows: comments, blank
+// lines, counts on the header's line, colours after a vertex or a face,
+// tabs and CRLF line ends, coordinates of 17 digits, exponents, integers.
+TEST(MesherInput, OffFilesAreReadAsCgalReadsThem)
+{
+  namespace input = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  const Surface sphere = mesher_shapes::icosphere(2, 1.0);
+  std::vector<std::string> texts;
+  {
+    std::ostringstream plain;
+    plain.precision(17);
+    plain << "OFF\n" << sphere.points.size() << ' ' << sphere.triangles.size() << " 0\n";
+    for(const auto& p : sphere.points) plain << p[0] * 1e-7 << ' ' << p[1] << ' ' << p[2] * 3e5 << "\n";
+    for(const auto& t : sphere.triangles) plain << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << "\n";
+    texts.push_back(plain.str());
+  }
+  {
+    std::ostringstream awkward;
+    awkward.precision(17);
+    awkward << "OFF # a comment after the header\n# a comment line\n\n"
+            << sphere.points.size() << "\t" << sphere.triangles.size() << " 0 # counts\n";
+    for(std::size_t i = 0; i < sphere.points.size(); ++i) {
+      awkward << int(std::floor(sphere.points[i][0] * 4)) << ' ' << sphere.points[i][1] << '\t'
+              << sphere.points[i][2];
+      awkward << (i % 3 == 0 ? "\r\n" : i % 3 == 1 ? " 0.25 0.5 1 # coloured\n\n" : "\n  # comment\n");
+    }
+    for(const auto& t : sphere.triangles) awkward << "3  " << t[0] << ' ' << t[1] << ' ' << t[2] << " 0.5 0.5 1\n";
+    texts.push_back(awkward.str());
+  }
+  for(std::size_t k = 0; k < texts.size(); ++k) {
+    const std::string path = temporary("as_cgal_" + std::to_string(k) + ".off");
+    std::ofstream(path) << texts[k];
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    ASSERT_TRUE(input::surface_detail::read_ascii_off(path, points, polygons)) << k;
+    std::vector<K::Point_3> cgal_points;
+    std::vector<std::vector<std::size_t>> cgal_polygons;
+    ASSERT_TRUE(CGAL::IO::read_polygon_soup(path, cgal_points, cgal_polygons)) << k;
+    ASSERT_EQ(points.size(), cgal_points.size()) << k;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      for(int a = 0; a < 3; ++a) ASSERT_EQ(points[i][a], cgal_points[i][a]) << k << ", point " << i;
+    EXPECT_EQ(polygons, cgal_polygons) << k;
+    std::remove(path.c_str());
+  }
+  // Other headers are CGAL's to read.
+  const std::string coff = temporary("colours.off");
+  std::ofstream(coff) << "COFF\n3 1 0\n0 0 0 1 0 0 1\n1 0 0 0 1 0 1\n0 1 0 0 0 1 1\n3 0 1 2\n";
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  EXPECT_FALSE(input::surface_detail::read_ascii_off(coff, points, polygons));
+  EXPECT_TRUE(points.empty() && polygons.empty());
+  std::remove(coff.c_str());
+}
+
 // A closed surface facing inward (each triangle reversed) is refused, alone
 // or nested in a good one, with the surface's number.
 TEST(MesherInput, InsideOutSurfacesAreRefused)
@@ -313,6 +372,8 @@ TEST(MesherInput, OffDefectsAreNamedWithTheirLine)
       {"negative", "-8 12 0", "", "", "line 2: the number of vertices is '-8'"},
       {"trillion", "1000000000000 12 0", "", "", "claims 1000000000000 vertices"},
       {"index", "8 12 0", "", "3 0 1 8", "refers to vertex '8', not one of the 8 vertices"},
+      {"two", "8 12 0", "0 0 # z?", "", "line 3: vertex 0 has 2 coordinates, not 3"},
+      {"corners", "8 12 0", "", "3 0 1", "line 11: face 0 has 2 of its 3 vertices"},
       {"short", "8 13 0", "", "", "the file ends before face 12 of 13"},
   };
   for(const Case& c : cases) {
