@@ -95,6 +95,20 @@ inline double mean(const std::vector<double>& values)
   return values.empty() ? 0 : sum / values.size();
 }
 
+// The vertices of facet f of a tetrahedron (the three but its vertex f), in
+// increasing order.
+template <class Tetrahedron>
+inline std::array<std::uint32_t, 3> sorted_facet(const Tetrahedron& tv, int f)
+{
+  std::array<std::uint32_t, 3> key;
+  for(int i = 0, k = 0; i < 4; ++i)
+    if(i != f) key[k++] = tv[i];
+  if(key[0] > key[1]) std::swap(key[0], key[1]);
+  if(key[1] > key[2]) std::swap(key[1], key[2]);
+  if(key[0] > key[1]) std::swap(key[0], key[1]);
+  return key;
+}
+
 // `threads`: the loops over the tetrahedra and the vertices run on as many
 // (TBB); the figures are the same for any number.
 inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh,
@@ -129,13 +143,10 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   forcing.erase(std::unique(forcing.begin(), forcing.end()), forcing.end());
   q.input_triangles_forcing_gamma_0_3 = forcing.size();
 
-  // Per tetrahedron: its six edges as (lower, higher) vertex and its four
-  // facets as sorted vertices with its subdomain, its gamma and smallest
-  // angle, by index; counts and extremes per chunk, added up in chunk
-  // order: the figures do not depend on the number of threads.
+  // Per tetrahedron: its gamma and smallest angle, by index; counts and
+  // extremes per chunk, added up in chunk order: the figures do not depend
+  // on the number of threads.
   const std::size_t n = mesh.tetrahedra.size();
-  std::vector<std::array<std::uint32_t, 2>> tet_edges(6 * n);
-  std::vector<std::array<std::uint32_t, 4>> tet_facets(4 * n);
   gammas.resize(n);
   smallest_angles.resize(n);
   const int chunks = chunk_count(n, threads);
@@ -164,7 +175,6 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
       for(int k = 0; k < 6; ++k) {
         const auto& e = cell_edge_vertices[k];
         shortest = std::min(shortest, distance(w[e[0]], w[e[1]]));
-        tet_edges[6 * t + k] = {std::min(tv[e[0]], tv[e[1]]), std::max(tv[e[0]], tv[e[1]])};
       }
       double centre[3];
       if(circumcentre(w[0], w[1], w[2], w[3], centre)) {
@@ -175,14 +185,8 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
         ++tally.radius_edge_histogram[bin];
       }
       bool forced = false;
-      for(int f = 0; f < 4; ++f) {
-        std::array<std::uint32_t, 3> key;
-        for(int i = 0, k = 0; i < 4; ++i)
-          if(i != f) key[k++] = tv[i];
-        std::sort(key.begin(), key.end());
-        tet_facets[4 * t + f] = {key[0], key[1], key[2], static_cast<std::uint32_t>(s)};
-        forced = forced || std::binary_search(forcing.begin(), forcing.end(), key);
-      }
+      for(int f = 0; f < 4 && !forcing.empty(); ++f)
+        forced = forced || std::binary_search(forcing.begin(), forcing.end(), sorted_facet(tv, f));
       // (The bound makes every forced gamma smaller; the test keeps the count
       // a part of the one under 0.3 whatever the roundings.)
       tally.tetrahedra_forced_below_gamma_0_3 += forced && gamma < 0.3 ? 1 : 0;
@@ -212,10 +216,17 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   q.min_dihedral_1st_percentile = percentile(smallest_angles, 0.01);
 
   // Each edge once, in (lower, higher) order: its length over the mean h
-  // of its ends.
+  // of its ends.  (The edges and facets below are read from the
+  // tetrahedra as the records are made: arrays of them took a fifth of the
+  // report's time on bunny00, filling and reading 140 MB.)
+  auto edge_end = [&](std::size_t i, int end) {
+    const auto& tv = mesh.tetrahedra[i / 6];
+    const int* e = cell_edge_vertices[i % 6];
+    return end == 0 ? std::min(tv[e[0]], tv[e[1]]) : std::max(tv[e[0]], tv[e[1]]);
+  };
   const Records_by_vertex<std::uint32_t> edges(
-      mesh.points.size(), tet_edges.size(), [&](std::size_t i) { return tet_edges[i][0]; },
-      [&](std::size_t i) { return tet_edges[i][1]; }, threads);
+      mesh.points.size(), 6 * n, [&](std::size_t i) { return edge_end(i, 0); },
+      [&](std::size_t i) { return edge_end(i, 1); }, threads);
   double sum = 0;
   q.min_edge_over_h = std::numeric_limits<double>::infinity();
   for(std::uint32_t a = 0; a < mesh.points.size(); ++a)
@@ -235,9 +246,10 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   // Each facet with the subdomains on its sides: a boundary facet has one
   // side, or two different ones.
   const Records_by_vertex<std::array<std::uint32_t, 3>> facets(
-      mesh.points.size(), tet_facets.size(), [&](std::size_t i) { return tet_facets[i][0]; },
+      mesh.points.size(), 4 * n, [&](std::size_t i) { return sorted_facet(mesh.tetrahedra[i / 4], int(i % 4))[0]; },
       [&](std::size_t i) {
-        return std::array<std::uint32_t, 3>{tet_facets[i][1], tet_facets[i][2], tet_facets[i][3]};
+        const std::array<std::uint32_t, 3> f = sorted_facet(mesh.tetrahedra[i / 4], int(i % 4));
+        return std::array<std::uint32_t, 3>{f[1], f[2], static_cast<std::uint32_t>(mesh.subdomain[i / 4])};
       },
       threads);
   // The boundary facets are counted, then the input triangles looked up

@@ -27,16 +27,34 @@ struct Records_by_vertex
   std::vector<std::size_t> begin; // of vertex v's records: begin[v] .. begin[v + 1]
   std::vector<Record> records;
 
-  // key(i) and record(i) for i in [0, n): the vertex and its record; the
-  // groups are sorted on `threads` threads.
+  // key(i) and record(i) for i in [0, n): the vertex and its record.  On
+  // `threads` threads: each chunk of [0, n) counts its records per vertex
+  // and writes them from its own offsets, after the earlier chunks' (the
+  // order of a sequential pass: bunny00's 5 million facets took 0.25 s
+  // with one pass), then the groups are sorted.
   template <class Key, class Make>
   Records_by_vertex(std::size_t vertices, std::size_t n, const Key& key, const Make& record, int threads = 1)
-      : begin(vertices + 2, 0), records(n)
+      : begin(vertices + 1, 0), records(n)
   {
-    for(std::size_t i = 0; i < n; ++i) ++begin[key(i) + 2];
-    for(std::size_t v = 2; v < begin.size(); ++v) begin[v] += begin[v - 1];
-    for(std::size_t i = 0; i < n; ++i) records[begin[key(i) + 1]++] = record(i);
-    begin.pop_back();
+    const int parts = chunk_count(n, threads);
+    std::vector<std::vector<std::size_t>> next(parts, std::vector<std::size_t>(vertices, 0));
+    for_each_chunk(parts, [&](int c) {
+      for(std::size_t i = chunk_begin(n, parts, c); i < chunk_begin(n, parts, c + 1); ++i) ++next[c][key(i)];
+    });
+    std::size_t offset = 0;
+    for(std::size_t v = 0; v < vertices; ++v) {
+      begin[v] = offset;
+      for(int c = 0; c < parts; ++c) {
+        const std::size_t count = next[c][v];
+        next[c][v] = offset;
+        offset += count;
+      }
+    }
+    begin[vertices] = offset;
+    for_each_chunk(parts, [&](int c) {
+      for(std::size_t i = chunk_begin(n, parts, c); i < chunk_begin(n, parts, c + 1); ++i)
+        records[next[c][key(i)]++] = record(i);
+    });
     const int chunks = chunk_count(vertices, threads);
     for_each_chunk(chunks, [&](int c) {
       for(std::size_t v = chunk_begin(vertices, chunks, c); v < chunk_begin(vertices, chunks, c + 1); ++v)
