@@ -247,8 +247,9 @@ TEST(MesherInput, ReadsOffStlObjAndSeveralFiles)
 // The package reads ASCII OFF files itself (CGAL's reader only for other
 // headers): the same points, to the bit, and the same polygons as CGAL's
 // reader on files written in the ways the format allows: comments, blank
-// lines, counts on the header's line, colours after a vertex or a face,
-// tabs and CRLF line ends, coordinates of 17 digits, exponents, integers.
+// lines, counts on the header's line, a number of edges of -1, colours
+// after a vertex or a face, tabs and CRLF line ends, coordinates of 17
+// digits, exponents, integers, subnormal and underflowing coordinates.
 TEST(MesherInput, OffFilesAreReadAsCgalReadsThem)
 {
   namespace input = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
@@ -267,10 +268,12 @@ TEST(MesherInput, OffFilesAreReadAsCgalReadsThem)
     std::ostringstream awkward;
     awkward.precision(17);
     awkward << "OFF # a comment after the header\n# a comment line\n\n"
-            << sphere.points.size() << "\t" << sphere.triangles.size() << " 0 # counts\n";
+            << sphere.points.size() << "\t" << sphere.triangles.size() << " -1 # counts\n";
     for(std::size_t i = 0; i < sphere.points.size(); ++i) {
-      awkward << int(std::floor(sphere.points[i][0] * 4)) << ' ' << sphere.points[i][1] << '\t'
-              << sphere.points[i][2];
+      awkward << int(std::floor(sphere.points[i][0] * 4)) << ' ' << sphere.points[i][1] << '\t';
+      if(i == 5) awkward << "1e-310"; // subnormal
+      else if(i == 6) awkward << "-3e-400"; // below the subnormals: -0
+      else awkward << sphere.points[i][2];
       awkward << (i % 3 == 0 ? "\r\n" : i % 3 == 1 ? " 0.25 0.5 1 # coloured\n\n" : "\n  # comment\n");
     }
     for(const auto& t : sphere.triangles) awkward << "3  " << t[0] << ' ' << t[1] << ' ' << t[2] << " 0.5 0.5 1\n";
@@ -368,7 +371,10 @@ TEST(MesherInput, OffDefectsAreNamedWithTheirLine)
       {"nan", "8 12 0", "nan 0 0", "", "line 3: vertex 0 has coordinate 'nan'"},
       {"inf", "8 12 0", "0 inf 0", "", "line 3: vertex 0 has coordinate 'inf'"},
       {"huge", "8 12 0", "0 0 1e400", "", "line 3: vertex 0 has coordinate '1e400', not a finite double"},
-      {"word", "8 12 0", "0 zero 0", "", "vertex 0 has coordinate 'zero', not a number"},
+      {"word", "8 12 0", "0 zero 0", "", "vertex 0 has coordinate 'zero', not a finite decimal number"},
+      {"hexadecimal", "8 12 0", "0x1p-1 0 0", "", "vertex 0 has coordinate '0x1p-1', not a finite decimal number"},
+      {"binary faces", "8 BINARY 0", "", "", "line 2: the number of faces is 'BINARY', not a count"},
+      {"commented", "8 12 0\n# a comment\n\n", "0 0 x", "", "line 6: vertex 0 has coordinate 'x'"},
       {"negative", "-8 12 0", "", "", "line 2: the number of vertices is '-8'"},
       {"trillion", "1000000000000 12 0", "", "", "claims 1000000000000 vertices"},
       {"index", "8 12 0", "", "3 0 1 8", "refers to vertex '8', not one of the 8 vertices"},

@@ -943,10 +943,10 @@ inline int perturbed_coplanar_side_of_bounded_circle(const double* p0, const dou
 }
 
 // Conflict test of a finite tetrahedron (positively oriented a, b, c, d).
-// Only the first stage (static bound, or per-call bound in the cavity
-// search) is inline: the cavity search runs it ~45 times per point, and
-// keeping the rare later stages in a separate function spares this path
-// their register saves and lets it be inlined into the search.
+// Only the first stage (the per-call bound) is inline: the cavity search
+// runs it ~45 times per point, and keeping the rare later stages in a
+// separate function spares this path their register saves and lets it be
+// inlined into the search.
 template <class Paths>
 inline bool finite_cell_in_conflict_after_first_stage(double det, const double* a, const double* b, const double* c,
                                                       const double* d, const double* p)

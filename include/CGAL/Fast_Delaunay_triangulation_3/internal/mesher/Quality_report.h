@@ -21,6 +21,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Flat_storage.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Predicates.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/Radix_sort.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/Tetrahedra_replacement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Records_by_vertex.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Refinement.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedral_mesh.h>
@@ -95,17 +96,11 @@ inline double mean(const std::vector<double>& values)
   return values.empty() ? 0 : sum / values.size();
 }
 
-// The vertices of facet f of a tetrahedron (the three but its vertex f), in
-// increasing order.
-template <class Tetrahedron>
-inline std::array<std::uint32_t, 3> sorted_facet(const Tetrahedron& tv, int f)
+// The vertices of facet f of a tetrahedron, in increasing order.
+inline std::array<std::uint32_t, 3> sorted_facet(const std::array<std::uint32_t, 4>& tv, int f)
 {
   std::array<std::uint32_t, 3> key;
-  for(int i = 0, k = 0; i < 4; ++i)
-    if(i != f) key[k++] = tv[i];
-  if(key[0] > key[1]) std::swap(key[0], key[1]);
-  if(key[1] > key[2]) std::swap(key[1], key[2]);
-  if(key[0] > key[1]) std::swap(key[0], key[1]);
+  sorted_facet_key(tv.data(), f, key.data());
   return key;
 }
 

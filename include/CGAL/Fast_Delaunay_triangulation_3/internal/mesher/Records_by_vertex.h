@@ -31,29 +31,32 @@ struct Records_by_vertex
   // `threads` threads: each chunk of [0, n) counts its records per vertex
   // and writes them from its own offsets, after the earlier chunks' (the
   // order of a sequential pass: bunny00's 5 million facets took 0.25 s
-  // with one pass), then the groups are sorted.
+  // with one pass), then the groups are sorted.  The chunks' offsets take
+  // at most the records' own memory: fewer chunks where vertices are many.
   template <class Key, class Make>
   Records_by_vertex(std::size_t vertices, std::size_t n, const Key& key, const Make& record, int threads = 1)
       : begin(vertices + 1, 0), records(n)
   {
-    const int parts = chunk_count(n, threads);
-    std::vector<std::vector<std::size_t>> next(parts, std::vector<std::size_t>(vertices, 0));
+    const std::size_t affordable = std::max<std::size_t>(1, n * sizeof(Record) / ((vertices + 1) * sizeof(std::size_t)));
+    const int parts = int(std::min<std::size_t>(std::size_t(chunk_count(n, threads)), affordable));
+    // Per chunk and vertex: its count, then where its next record goes.
+    std::vector<std::vector<std::size_t>> position(parts, std::vector<std::size_t>(vertices, 0));
     for_each_chunk(parts, [&](int c) {
-      for(std::size_t i = chunk_begin(n, parts, c); i < chunk_begin(n, parts, c + 1); ++i) ++next[c][key(i)];
+      for(std::size_t i = chunk_begin(n, parts, c); i < chunk_begin(n, parts, c + 1); ++i) ++position[c][key(i)];
     });
     std::size_t offset = 0;
     for(std::size_t v = 0; v < vertices; ++v) {
       begin[v] = offset;
       for(int c = 0; c < parts; ++c) {
-        const std::size_t count = next[c][v];
-        next[c][v] = offset;
+        const std::size_t count = position[c][v];
+        position[c][v] = offset;
         offset += count;
       }
     }
     begin[vertices] = offset;
     for_each_chunk(parts, [&](int c) {
       for(std::size_t i = chunk_begin(n, parts, c); i < chunk_begin(n, parts, c + 1); ++i)
-        records[next[c][key(i)]++] = record(i);
+        records[position[c][key(i)]++] = record(i);
     });
     const int chunks = chunk_count(vertices, threads);
     for_each_chunk(chunks, [&](int c) {
