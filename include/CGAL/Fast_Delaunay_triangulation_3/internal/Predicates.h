@@ -294,26 +294,24 @@ struct In_sphere_rows
     return std::max(std::max(x, y), z);
   }
 
-  double determinant() const;
+  double determinant() const
+  {
+    const double ab = ax * by - bx * ay, bc = bx * cy - cx * by;
+    const double cd = cx * dy - dx * cy, da = dx * ay - ax * dy;
+    const double ac = ax * cy - cx * ay, bd = bx * dy - dx * by;
+
+    const double abc = az * bc - bz * ac + cz * ab;
+    const double bcd = bz * cd - cz * bd + dz * bc;
+    const double cda = cz * da + dz * ac + az * cd;
+    const double dab = dz * ab + az * bd + bz * da;
+
+    const double alift = ax * ax + ay * ay + az * az;
+    const double blift = bx * bx + by * by + bz * bz;
+    const double clift = cx * cx + cy * cy + cz * cz;
+    const double dlift = dx * dx + dy * dy + dz * dz;
+    return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  }
 };
-
-inline double In_sphere_rows::determinant() const
-{
-  const double ab = ax * by - bx * ay, bc = bx * cy - cx * by;
-  const double cd = cx * dy - dx * cy, da = dx * ay - ax * dy;
-  const double ac = ax * cy - cx * ay, bd = bx * dy - dx * by;
-
-  const double abc = az * bc - bz * ac + cz * ab;
-  const double bcd = bz * cd - cz * bd + dz * bc;
-  const double cda = cz * da + dz * ac + az * cd;
-  const double dab = dz * ab + az * bd + bz * da;
-
-  const double alift = ax * ax + ay * ay + az * az;
-  const double blift = bx * bx + by * by + bz * bz;
-  const double clift = cx * cx + cy * cy + cz * cz;
-  const double dlift = dx * dx + dy * dy + dz * dz;
-  return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-}
 
 inline double in_sphere_determinant(const double* p, const double* q, const double* r,
                                     const double* s, const double* t)
@@ -767,9 +765,9 @@ inline int side_of_oriented_sphere(const double* p, const double* q, const doubl
 // (56% of the cavity's tests on 1e6 points near a sphere, nearly all in 20
 // tight clusters, each then out of line after a mispredicted branch), so
 // they compute the per-call bound beside the determinant
-// (Filter_bounds::in_sphere_of_largest).  In the cavity search the box
-// still decides whether that bound is valid: it bounds the differences from
-// above.  No global state: the kernel owns its copy.
+// (Filter_bounds::in_sphere_of_largest).  In the vectorised cavity search
+// the box still decides whether that bound is valid: it bounds the
+// differences from above.  No global state: the kernel owns its copy.
 struct Static_filter
 {
   double orientation = std::numeric_limits<double>::infinity();
@@ -956,13 +954,7 @@ inline bool finite_cell_in_conflict_after_first_stage(double det, const double* 
   return perturbed_tie_break(a, b, c, d, p) > 0;
 }
 
-__attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_first_stage(
-    double det, const double* a, const double* b, const double* c, const double* d, const double* p)
-{
-  return finite_cell_in_conflict_after_first_stage<Default_paths>(det, a, b, c, d, p);
-}
-
-// The same for the two forms of finite_record_in_conflict.
+// One function for each form of the first stage, scalar and vector.
 __attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_first_stage_scalar(
     double det, const double* a, const double* b, const double* c, const double* d, const double* p)
 {
@@ -998,6 +990,15 @@ inline bool sign_bit(double x)
   return (bits >> 63) != 0;
 }
 
+// The per-call bound on the in-sphere determinant's error, from the largest
+// |coordinate difference| of its points and the absolute term for underflow
+// (see Filter_bounds::in_sphere_of_largest).
+inline double in_sphere_bound_of_largest(double largest, double underflow)
+{
+  const double square = largest * largest;
+  return Filter_bounds::in_sphere_of_largest * (square * square * largest) + underflow;
+}
+
 #ifdef CGAL_FDT3_SIMD_RECORDS
 CGAL_FDT3_TARGET_AVX2 inline bool finite_record_in_conflict_avx2(const double* a, const double* b, const double* c,
                                                                  const double* d, const double* p,
@@ -1006,17 +1007,35 @@ CGAL_FDT3_TARGET_AVX2 inline bool finite_record_in_conflict_avx2(const double* a
   using namespace simd_records;
   const Columns q = columns_relative_to(a, b, c, d, p);
   const double det = in_sphere_determinant_of_columns(q);
-  const double largest = largest_of_columns(q), square = largest * largest;
-  const double bound = Filter_bounds::in_sphere_of_largest * (square * square * largest) + filter.in_sphere_underflow;
+  const double bound = in_sphere_bound_of_largest(largest_of_columns(q), filter.in_sphere_underflow);
   if(__builtin_expect(!beyond_bound(det, bound), 0))
     return finite_cell_in_conflict_beyond_first_stage_avx2(det, a, b, c, d, p);
   return sign_bit(det);
 }
 #endif
 
+// The same test for every caller but the vectorised cavity search (moves,
+// validity checks, the scalar cavity search), whose tetrahedra are as small
+// next to the bounding box as the cavity's: the per-call bound, whose
+// validity (every difference below Filter_bounds::in_sphere_max) is checked
+// per call rather than taken from a box.
+inline bool finite_cell_in_conflict(const double* a, const double* b, const double* c,
+                                    const double* d, const double* p)
+{
+  const In_sphere_rows rows(a, b, c, d, p);
+  const double det = rows.determinant();
+  const double largest = rows.largest();
+  const double underflow = largest < Filter_bounds::in_sphere_max ? Filter_bounds::in_sphere_underflow
+                                                                   : std::numeric_limits<double>::infinity();
+  if(__builtin_expect(!beyond_bound(det, in_sphere_bound_of_largest(largest, underflow)), 0))
+    return finite_cell_in_conflict_beyond_first_stage_scalar(det, a, b, c, d, p);
+  return sign_bit(det);
+}
+
 // finite_cell_in_conflict in the cavity search's form: the sign returned as
-// data, with the vectorised determinant for Avx2_paths, and the per-call
-// bound as the first stage (see Static_filter).
+// data, with the vectorised determinant for Avx2_paths, whose first stage
+// takes the validity of its bound from the box (`filter`, see
+// Static_filter) and so spares the per-call check.
 template <class Paths = Default_paths>
 inline bool finite_record_in_conflict(const double* a, const double* b, const double* c,
                                       const double* d, const double* p, const Static_filter& filter)
@@ -1024,30 +1043,8 @@ inline bool finite_record_in_conflict(const double* a, const double* b, const do
 #ifdef CGAL_FDT3_SIMD_RECORDS
   if constexpr(Paths::avx2) return finite_record_in_conflict_avx2(a, b, c, d, p, filter);
 #endif
-  const In_sphere_rows rows(a, b, c, d, p);
-  const double det = rows.determinant();
-  const double largest = rows.largest(), square = largest * largest;
-  const double bound = Filter_bounds::in_sphere_of_largest * (square * square * largest) + filter.in_sphere_underflow;
-  if(__builtin_expect(!beyond_bound(det, bound), 0))
-    return finite_cell_in_conflict_beyond_first_stage_scalar(det, a, b, c, d, p);
-  return sign_bit(det);
-}
-
-// The same test for every other caller (moves, validity checks), whose
-// tetrahedra are as small next to the bounding box as the cavity's: the
-// per-call bound, whose validity (every difference below
-// Filter_bounds::in_sphere_max) is checked per call, not taken from a box.
-inline bool finite_cell_in_conflict(const double* a, const double* b, const double* c,
-                                    const double* d, const double* p)
-{
-  const In_sphere_rows rows(a, b, c, d, p);
-  const double det = rows.determinant();
-  const double largest = rows.largest(), square = largest * largest;
-  if(largest < Filter_bounds::in_sphere_max &&
-     beyond_bound(det, Filter_bounds::in_sphere_of_largest * (square * square * largest) +
-                           Filter_bounds::in_sphere_underflow))
-    return sign_bit(det);
-  return finite_cell_in_conflict_beyond_first_stage(det, a, b, c, d, p);
+  (void)filter;
+  return finite_cell_in_conflict(a, b, c, d, p);
 }
 
 // Conflict test of a ghost tetrahedron (a, b, c, infinite): its "sphere" is

@@ -227,12 +227,8 @@ inline bool read_ascii_off(const std::string& path, std::vector<std::array<doubl
   Line_reader::split(line, words);
   if(words[word++] != "OFF") return false;
   // A count: digits only, at most what the file's bytes can hold (a vertex
-  // takes at least 6 bytes, "0 0 0\n", a face 8).  The number of edges is
-  // not used: CGAL takes any integer there, -1 too.
-  auto count = [&](const char* what, std::uintmax_t bytes_each) -> std::uintmax_t {
-    const std::string_view w = next_word(what);
-    if(w == "BINARY" && bytes_each == 6) return std::uintmax_t(-1); // OFF BINARY
-    if(bytes_each == 1 && w.size() > 1 && w[0] == '-' && all_digits(w.substr(1))) return 0;
+  // takes at least 6 bytes, "0 0 0\n", a face 8).
+  auto count = [&](std::string_view w, const char* what, std::uintmax_t bytes_each) -> std::uintmax_t {
     if(!all_digits(w)) fail(where() + "the number of " + what + " is " + quoted(w) + ", not a count");
     const std::uintmax_t n = w.size() > 18 ? std::uintmax_t(-2) : digits_value(w);
     if(n > text.size() / bytes_each)
@@ -240,10 +236,13 @@ inline bool read_ascii_off(const std::string& path, std::vector<std::array<doubl
            std::to_string(text.size()) + " bytes can hold");
     return n;
   };
-  const std::uintmax_t vertices = count("vertices", 6);
-  if(vertices == std::uintmax_t(-1)) return false; // OFF BINARY
-  const std::uintmax_t faces = count("faces", 8);
-  count("edges", 1);
+  const std::string_view first_count = next_word("vertices");
+  if(first_count == "BINARY") return false; // OFF BINARY
+  const std::uintmax_t vertices = count(first_count, "vertices", 6);
+  const std::uintmax_t faces = count(next_word("faces"), "faces", 8);
+  // The number of edges is not used: CGAL takes any integer there, -1 too.
+  const std::string_view edges = next_word("edges");
+  if(!(edges.size() > 1 && edges[0] == '-' && all_digits(edges.substr(1)))) count(edges, "edges", 1);
   std::vector<std::array<double, 3>> file_points(vertices);
   for(std::uintmax_t v = 0; v < vertices; ++v) {
     if(!lines.next(line))
