@@ -192,6 +192,77 @@ TEST(Mesher, QualityReportSameOnTwoThreads)
   EXPECT_EQ(in_histogram, mesh.tetrahedra.size());
 }
 
+// The report's edge and facet figures are those of sets of the mesh's edges
+// and facets, on two nested spheres (two subdomains, an interface) with
+// triangles dropped from and added to the list.
+TEST(Mesher, QualityReportEdgesAndFacetsAsSetsCountThem)
+{
+  Surface s = mesher_shapes::icosphere(2);
+  const Surface inner = mesher_shapes::icosphere(1, 0.5);
+  const std::uint32_t shift = std::uint32_t(s.points.size());
+  s.points.insert(s.points.end(), inner.points.begin(), inner.points.end());
+  for(const auto& t : inner.triangles) s.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+  CGAL::Fast_mesher_3::Mesher_options options;
+  options.maximum_size = 0.15;
+  Mesh mesh = CGAL::Fast_mesher_3::mesh_surfaces(s.points, s.triangles, options);
+  ASSERT_EQ(mesh.number_of_subdomains, 2);
+  mesh.triangles.erase(mesh.triangles.begin());             // an extra boundary facet
+  mesh.triangles.push_back(mesh.triangles.back());          // a copy: counted once
+  mesh.triangles.push_back({0, 1, std::uint32_t(mesh.points.size())}); // no facet: missing
+
+  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+  std::map<std::array<std::uint32_t, 3>, std::vector<int>> sides;
+  for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
+    const auto& v = mesh.tetrahedra[t];
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) edges.insert({std::min(v[i], v[j]), std::max(v[i], v[j])});
+    for(int f = 0; f < 4; ++f) {
+      std::array<std::uint32_t, 3> key;
+      for(int i = 0, k = 0; i < 4; ++i)
+        if(i != f) key[k++] = v[i];
+      std::sort(key.begin(), key.end());
+      sides[key].push_back(mesh.subdomain[t]);
+    }
+  }
+  double min_ratio = std::numeric_limits<double>::infinity(), max_ratio = 0, sum = 0;
+  std::size_t below = 0;
+  for(const auto& e : edges) {
+    const auto& a = mesh.points[e.first];
+    const auto& b = mesh.points[e.second];
+    const double ratio = std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                   (a[2] - b[2]) * (a[2] - b[2])) /
+                         ((mesh.size[e.first] + mesh.size[e.second]) / 2);
+    min_ratio = std::min(min_ratio, ratio);
+    max_ratio = std::max(max_ratio, ratio);
+    sum += ratio;
+    below += ratio < 0.7 ? 1 : 0;
+  }
+  auto on_boundary = [](const std::vector<int>& s) { return s.size() == 1 || (s.size() == 2 && s[0] != s[1]); };
+  std::set<std::array<std::uint32_t, 3>> listed;
+  std::size_t missing = 0;
+  for(auto t : mesh.triangles) {
+    std::sort(t.begin(), t.end());
+    const auto it = sides.find(t);
+    if(it == sides.end() || !on_boundary(it->second)) ++missing;
+    else listed.insert(t);
+  }
+  std::size_t boundary = 0;
+  for(const auto& f : sides) boundary += on_boundary(f.second) ? 1 : 0;
+
+  for(int threads : {1, 2}) {
+    const CGAL::Fast_mesher_3::Quality_report q = CGAL::Fast_mesher_3::quality_report(mesh, threads);
+    EXPECT_EQ(q.edges, edges.size());
+    EXPECT_EQ(q.edges_below_0_7h, below);
+    EXPECT_EQ(q.min_edge_over_h, min_ratio);
+    EXPECT_EQ(q.max_edge_over_h, max_ratio);
+    EXPECT_NEAR(q.mean_edge_over_h, sum / edges.size(), 1e-12);
+    EXPECT_EQ(q.missing_input_triangles, missing);
+    EXPECT_EQ(q.extra_boundary_facets, boundary - listed.size());
+    EXPECT_EQ(q.missing_input_triangles, 1u);
+    EXPECT_EQ(q.extra_boundary_facets, 1u);
+  }
+}
+
 // CGAL's elephant: a fine organic surface whose triangles the empty mesh
 // already has (no TetGen), h from the surface alone.
 TEST(Mesher, CgalDataElephant)
