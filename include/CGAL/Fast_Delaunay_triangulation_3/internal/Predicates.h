@@ -954,7 +954,9 @@ inline bool finite_cell_in_conflict_after_first_stage(double det, const double* 
   return perturbed_tie_break(a, b, c, d, p) > 0;
 }
 
-// One function for each form of the first stage, scalar and vector.
+// The later stages, out of line, one function for each form of the first
+// stage: scalar (finite_cell_in_conflict, for every caller but the
+// vectorised cavity search, in any build) and vector.
 __attribute__((noinline)) inline bool finite_cell_in_conflict_beyond_first_stage_scalar(
     double det, const double* a, const double* b, const double* c, const double* d, const double* p)
 {

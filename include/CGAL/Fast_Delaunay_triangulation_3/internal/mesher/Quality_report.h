@@ -30,6 +30,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <ostream>
 #include <vector>
 
@@ -215,11 +217,11 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   // tetrahedron) incidences, then every vertex alone, on the report's
   // threads, its edges listed once with a per-thread mark and its facets
   // sorted in a local buffer.  (Grouping 6n edge and 4n facet records by
-  // vertex, each group sorted, took about 0.5 s of the report's 0.75 s on
+  // vertex, each group sorted, took about 0.5 s of the report's 0.64 s on
   // bunny00's mesh; this, about 0.35 s, mostly reading the tetrahedra
   // around each vertex.)
   const std::size_t nv = mesh.points.size();
-  const Records_by_vertex<std::uint32_t> around(
+  const Records_by_vertex<std::uint32_t> tetrahedra_around(
       nv, 4 * n, [&](std::size_t i) { return mesh.tetrahedra[i / 4][i % 4]; },
       [&](std::size_t i) { return static_cast<std::uint32_t>(i / 4); }, threads, Group_order::as_made);
   // The input triangles (sorted) whose lowest vertex is v: input_begin[v] ..
@@ -249,44 +251,67 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   // Per vertex, the sum of its edges' ratios, added up in vertex order
   // afterwards: the mean does not depend on the number of threads.
   std::vector<double> edge_sum(nv, 0.0);
-  const int vertex_chunks = chunk_count(nv, threads);
+  // Each chunk's marks span every vertex: no more chunks than keep them
+  // within the incidences' own memory (4n words).
+  const int vertex_chunks =
+      int(std::min<std::size_t>(std::size_t(chunk_count(nv, threads)), std::max<std::size_t>(1, 4 * n / std::max<std::size_t>(nv, 1))));
   std::vector<Tally> vertex_tallies(vertex_chunks);
   for_each_chunk(vertex_chunks, [&](int c) {
     Tally& tally = vertex_tallies[c];
     std::vector<std::uint32_t> ends;
     std::vector<Facet_side> sides;
-    // seen_from[b] == a: the edge (a, b) is listed (no vertex is seen
-    // from the last one, which has no higher vertex).
-    std::vector<std::uint32_t> seen_from(nv, std::uint32_t(nv - 1));
+    // listed_from[b] == a: the edge (a, b) is listed (no vertex is marked
+    // from the last one at first: it has no higher vertex).
+    std::vector<std::uint32_t> listed_from(nv, std::uint32_t(nv - 1));
+    auto list_edge = [&](std::uint32_t a, std::uint32_t b) {
+      if(listed_from[b] != a) {
+        listed_from[b] = a;
+        ends.push_back(b);
+      }
+    };
     for(std::uint32_t a = std::uint32_t(chunk_begin(nv, vertex_chunks, c));
         a < chunk_begin(nv, vertex_chunks, c + 1); ++a) {
       ends.clear();
       sides.clear();
-      for(std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k) {
-        const std::uint32_t t = around.records[k];
-        if(k > around.begin[a] && around.records[k - 1] == t) continue; // a repeated vertex
-        const auto& tv = mesh.tetrahedra[t];
+      bool edge_to_itself = false;
+      for(std::size_t k = tetrahedra_around.begin[a]; k < tetrahedra_around.begin[a + 1]; ++k) {
+        const std::uint32_t tetrahedron = tetrahedra_around.records[k];
+        // A tetrahedron with a twice is listed twice, one after the other
+        // (the incidences are in the order they were made).
+        if(k > tetrahedra_around.begin[a] && tetrahedra_around.records[k - 1] == tetrahedron) continue;
+        const auto& tv = mesh.tetrahedra[tetrahedron];
+        const std::uint32_t subdomain = static_cast<std::uint32_t>(mesh.subdomain[tetrahedron]);
+        std::uint32_t higher[3];
+        int count = 0, copies_of_a = 0;
+        for(int j = 0; j < 4; ++j) {
+          if(tv[j] > a) higher[count++] = tv[j];
+          copies_of_a += tv[j] == a ? 1 : 0;
+        }
+        if(copies_of_a > 1) {
+          // A flat tetrahedron with a repeated vertex: its 4 facets and 6
+          // edges as they are, the edge (a, a) and facets with a twice too.
+          edge_to_itself = true;
+          for(int j = 0; j < count; ++j) list_edge(a, higher[j]);
+          for(int f = 0; f < 4; ++f) {
+            std::uint32_t key[3];
+            sorted_facet_key(tv.data(), f, key);
+            if(key[0] == a) sides.push_back({pack(key[1], key[2]), subdomain});
+          }
+          continue;
+        }
         // The edges of a towards higher vertices; the facets whose lowest
         // vertex is a: those of a and two higher vertices.
-        std::uint32_t higher[3];
-        int count = 0;
-        for(int j = 0; j < 4; ++j)
-          if(tv[j] > a) higher[count++] = tv[j];
-        for(int j = 0; j < count; ++j)
-          if(seen_from[higher[j]] != a) {
-            seen_from[higher[j]] = a;
-            ends.push_back(higher[j]);
-          }
+        for(int j = 0; j < count; ++j) list_edge(a, higher[j]);
         if(count < 2) continue;
         std::sort(higher, higher + count);
-        const std::uint32_t subdomain = static_cast<std::uint32_t>(mesh.subdomain[t]);
         sides.push_back({pack(higher[0], higher[1]), subdomain});
         if(count == 3) {
           sides.push_back({pack(higher[0], higher[2]), subdomain});
           sides.push_back({pack(higher[1], higher[2]), subdomain});
         }
       }
-      // Each edge once, (a, b) with a < b: its length over the mean h of its ends.
+      if(edge_to_itself) ends.push_back(a);
+      // Each edge once, (a, b) with a <= b: its length over the mean h of its ends.
       double sum = 0;
       for(const std::uint32_t b : ends) {
         const double ratio =
@@ -320,14 +345,14 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
         k += count;
       }
       for(std::size_t i = input_begin[a]; i < input_begin[a + 1]; ++i) {
-        const auto& t = input[i];
-        const Facet_side lowest = {pack(t[1], t[2]), 0};
+        const auto& triangle = input[i];
+        const Facet_side lowest = {pack(triangle[1], triangle[2]), 0};
         const std::size_t k = std::size_t(std::lower_bound(sides.begin(), sides.end(), lowest) - sides.begin());
         if(k == sides.size() || sides[k].others != lowest.others) {
           ++tally.missing;
           continue;
         }
-        if(i > input_begin[a] && input[i - 1] == t) continue; // a copy: the facet is counted
+        if(i > input_begin[a] && input[i - 1] == triangle) continue; // a copy: the facet is counted
         if(on_boundary(k, sides_of(k))) ++tally.input_on_boundary;
         else ++tally.missing;
       }

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Records grouped by a vertex, for the mesher's edge and facet look-ups:
-// the quality report's and the input check's.
+// Records grouped by a vertex: the tetrahedra around each vertex for the
+// quality report, the edges of the input surface for its check.
 
 #ifndef CGAL_FDT3_INTERNAL_MESHER_RECORDS_BY_VERTEX_H
 #define CGAL_FDT3_INTERNAL_MESHER_RECORDS_BY_VERTEX_H
@@ -23,7 +23,9 @@ namespace mesher {
 
 // An allocator whose construct() without arguments default-initialises:
 // a vector of plain records that are all written next is not zero-filled
-// first (60 MB for the facets of bunny00's mesh).
+// first (20 MB of incidences for bunny00's mesh).  Its own rebind is
+// needed: the one inherited from std::allocator (C++17) would make the
+// vector use std::allocator again.
 template <class T>
 struct Default_init_allocator : std::allocator<T>
 {
