@@ -253,8 +253,8 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   std::vector<double> edge_sum(nv, 0.0);
   // Each chunk's marks span every vertex: no more chunks than keep them
   // within the incidences' own memory (4n words).
-  const int vertex_chunks =
-      int(std::min<std::size_t>(std::size_t(chunk_count(nv, threads)), std::max<std::size_t>(1, 4 * n / std::max<std::size_t>(nv, 1))));
+  const std::size_t affordable_chunks = std::max<std::size_t>(1, 4 * n / std::max<std::size_t>(nv, 1));
+  const int vertex_chunks = int(std::min<std::size_t>(std::size_t(chunk_count(nv, threads)), affordable_chunks));
   std::vector<Tally> vertex_tallies(vertex_chunks);
   for_each_chunk(vertex_chunks, [&](int c) {
     Tally& tally = vertex_tallies[c];
@@ -287,11 +287,12 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
           if(tv[j] > a) higher[count++] = tv[j];
           copies_of_a += tv[j] == a ? 1 : 0;
         }
+        // The edges of a towards higher vertices.
+        for(int j = 0; j < count; ++j) list_edge(a, higher[j]);
         if(copies_of_a > 1) {
           // A flat tetrahedron with a repeated vertex: its 4 facets and 6
           // edges as they are, the edge (a, a) and facets with a twice too.
           edge_to_itself = true;
-          for(int j = 0; j < count; ++j) list_edge(a, higher[j]);
           for(int f = 0; f < 4; ++f) {
             std::uint32_t key[3];
             sorted_facet_key(tv.data(), f, key);
@@ -299,9 +300,7 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
           }
           continue;
         }
-        // The edges of a towards higher vertices; the facets whose lowest
-        // vertex is a: those of a and two higher vertices.
-        for(int j = 0; j < count; ++j) list_edge(a, higher[j]);
+        // The facets whose lowest vertex is a: those of a and two higher vertices.
         if(count < 2) continue;
         std::sort(higher, higher + count);
         sides.push_back({pack(higher[0], higher[1]), subdomain});
