@@ -25,6 +25,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -151,6 +152,23 @@ TEST(Mesher, QualityReportAgreesWithIndependentChecks)
   Mesh broken = mesh;
   broken.triangles.pop_back();
   EXPECT_FALSE(CGAL::Fast_mesher_3::quality_report(broken).boundary_equals_input());
+
+  // A mesh the report would read past is refused, the defect named.
+  auto expect_refused = [](const Mesh& bad, const std::string& words) {
+    try {
+      CGAL::Fast_mesher_3::quality_report(bad, 2);
+      ADD_FAILURE() << "reported on a mesh with " << words;
+    } catch(const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  Mesh past_the_points = mesh;
+  past_the_points.tetrahedra[5][3] = static_cast<std::uint32_t>(mesh.points.size());
+  expect_refused(past_the_points, "quality_report: tetrahedron #5 refers to point #" +
+                                      std::to_string(mesh.points.size()) + ", past the");
+  Mesh untagged = mesh;
+  untagged.subdomain.pop_back();
+  expect_refused(untagged, "subdomain tags for " + std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
 }
 
 // The report's loops on two threads give every figure of one thread's.

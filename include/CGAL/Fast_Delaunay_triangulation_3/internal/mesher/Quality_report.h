@@ -33,6 +33,8 @@
 #include <cstdint>
 #include <limits>
 #include <ostream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -111,6 +113,17 @@ inline std::array<std::uint32_t, 3> sorted_facet(const std::array<std::uint32_t,
 inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh,
                                                           int threads = 1)
 {
+  // The loops below index the points by the tetrahedra's vertex ids and the
+  // tags by tetrahedron: a mesh they would read past is refused first.
+  if(mesh.subdomain.size() != mesh.tetrahedra.size())
+    throw std::invalid_argument("quality_report: " + std::to_string(mesh.subdomain.size()) + " subdomain tags for " +
+                                std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
+  for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+    for(std::uint32_t v : mesh.tetrahedra[t])
+      if(v >= mesh.points.size())
+        throw std::invalid_argument("quality_report: tetrahedron #" + std::to_string(t) + " refers to point #" +
+                                    std::to_string(v) + ", past the " + std::to_string(mesh.points.size()) +
+                                    " points");
   CGAL::Fast_mesher_3::Quality_report q;
   q.vertices = mesh.points.size();
   q.tetrahedra = mesh.tetrahedra.size();
