@@ -43,6 +43,15 @@ inline int chunk_count(std::size_t n, int num_threads)
   return int(std::min<std::size_t>(std::size_t(std::max(num_threads, 1)), useful));
 }
 
+// chunk_count(n, num_threads), lowered so that the chunks' own buffers,
+// `chunk_bytes` each, take at most `budget_bytes` (one chunk at least): for
+// loops whose chunks each hold something as large as the whole input.
+inline int chunk_count_within(std::size_t n, int num_threads, std::size_t chunk_bytes, std::size_t budget_bytes)
+{
+  const std::size_t affordable = std::max<std::size_t>(1, budget_bytes / std::max<std::size_t>(chunk_bytes, 1));
+  return int(std::min<std::size_t>(std::size_t(chunk_count(n, num_threads)), affordable));
+}
+
 // First item of chunk c when n items are cut into `chunks` contiguous pieces whose sizes differ by at most one.
 inline std::size_t chunk_begin(std::size_t n, int chunks, int c)
 {

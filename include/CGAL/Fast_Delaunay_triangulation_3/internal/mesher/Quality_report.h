@@ -266,8 +266,8 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   std::vector<double> edge_sum(nv, 0.0);
   // Each chunk's marks span every vertex: no more chunks than keep them
   // within the incidences' own memory (4n words).
-  const std::size_t affordable_chunks = std::max<std::size_t>(1, 4 * n / std::max<std::size_t>(nv, 1));
-  const int vertex_chunks = int(std::min<std::size_t>(std::size_t(chunk_count(nv, threads)), affordable_chunks));
+  const int vertex_chunks =
+      chunk_count_within(nv, threads, nv * sizeof(std::uint32_t), 4 * n * sizeof(std::uint32_t));
   std::vector<Tally> vertex_tallies(vertex_chunks);
   for_each_chunk(vertex_chunks, [&](int c) {
     Tally& tally = vertex_tallies[c];

@@ -77,8 +77,7 @@ struct Records_by_vertex
                     Group_order order = Group_order::sorted)
       : begin(vertices + 1, 0), records(n)
   {
-    const std::size_t affordable = std::max<std::size_t>(1, n * sizeof(Record) / ((vertices + 1) * sizeof(std::size_t)));
-    const int parts = int(std::min<std::size_t>(std::size_t(chunk_count(n, threads)), affordable));
+    const int parts = chunk_count_within(n, threads, vertices * sizeof(std::size_t), n * sizeof(Record));
     // Per chunk and vertex: its count, then where its next record goes.
     std::vector<std::vector<std::size_t>> position(parts, std::vector<std::size_t>(vertices, 0));
     for_each_chunk(parts, [&](int c) {
