@@ -188,6 +188,41 @@ TEST(SizeField, CapPerSubdomain)
   EXPECT_THROW(mesh_surfaces(s.points, s.triangles, negative), std::invalid_argument);
 }
 
+// Input triangles over the size next to them are counted once each, with
+// a subdomain's cap applying on its side only.  Cubes [0, 1]^3 and
+// [0.3, 0.7]^3: their right triangles have circumradius 0.707 and 0.283.
+TEST(SizeField, TrianglesOverTheSizeAreCounted)
+{
+  const mesher_shapes::Surface s = mesher_shapes::combine(mesher_shapes::cube(0, 1), mesher_shapes::cube(0.3, 0.7));
+  Mesher_statistics stats;
+  Mesher_options options;
+  options.optimize = false;
+  const Tetrahedral_mesh plain = mesh_surfaces(s.points, s.triangles, options, &stats);
+  ASSERT_EQ(plain.number_of_subdomains, 2);
+  EXPECT_EQ(stats.triangles_over_size, 0u); // h from the surface's own edges
+  const int inner = mesher_checks::volume_of_subdomain(plain, 1) < mesher_checks::volume_of_subdomain(plain, 2) ? 1 : 2;
+  auto over_size = [&](const Mesher_options& o) {
+    Mesher_statistics st;
+    mesh_surfaces(s.points, s.triangles, o, &st);
+    return st.triangles_over_size;
+  };
+  Mesher_options cap = options;
+  cap.maximum_size = 0.6; // 1.4 h = 0.84: every triangle within
+  EXPECT_EQ(over_size(cap), 0u);
+  cap.maximum_size = 0.4; // 1.4 h = 0.56: the outer cube's triangles over it
+  EXPECT_EQ(over_size(cap), 12u);
+  cap.maximum_size = 0.1; // every triangle over it, the inner ones counted once
+  EXPECT_EQ(over_size(cap), 24u);
+  Mesher_options inner_cap = options;
+  inner_cap.subdomain_sizes.assign(2, 0.0);
+  inner_cap.subdomain_sizes[inner - 1] = 0.1; // only the inner cube's triangles border it
+  EXPECT_EQ(over_size(inner_cap), 12u);
+  Mesher_options outer_cap = options;
+  outer_cap.subdomain_sizes.assign(2, 0.0);
+  outer_cap.subdomain_sizes[2 - inner] = 0.1; // both cubes' triangles border the shell
+  EXPECT_EQ(over_size(outer_cap), 24u);
+}
+
 TEST(SizeField, AFunctionWithoutASizeIsReported)
 {
   const mesher_shapes::Surface s = mesher_shapes::torus(1, 0.35, 20, 8);

@@ -133,7 +133,12 @@ int main(int argc, char** argv)
                 << (stats.used_tetgen ? " with " + std::to_string(stats.steiner_points) + " interior Steiner points"
                                       : std::string())
                 << ")\n"
-                << "colouring and sizes     " << stats.colouring_seconds << " s\n"
+                << "colouring and sizes     " << stats.colouring_seconds << " s"
+                << (stats.triangles_over_size == 0
+                        ? std::string("\n")
+                        : " (" + std::to_string(stats.triangles_over_size) +
+                              " input triangles over the size next to them: the surface is never split, so the "
+                              "tetrahedra along them stay large or flat; remesh the surface to the size first)\n")
                 << "refinement              " << stats.refinement_seconds << " s (" << stats.refinement_passes
                 << " passes, " << stats.refinement_points << " points inserted, " << stats.filtered_points
                 << " filtered, " << stats.aborted_points << " aborted; "

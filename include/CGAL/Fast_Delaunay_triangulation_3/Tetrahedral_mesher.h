@@ -124,6 +124,13 @@ struct Mesher_statistics
   std::size_t tetgen_components = 0;           // and by TetGen (both 0 when TetGen took everything)
   bool whole_surface_to_tetgen = false;        // the local recovery failed, TetGen took everything
   std::size_t steiner_points = 0;    // added by the recovery, inside the volumes
+  // Input triangles whose circumradius is over radius_ratio times the size
+  // next to them (the corners' h, with a subdomain's cap on its side).  The
+  // surface is never split, so the tetrahedra on these stay over the size
+  // and those between them and the smaller ones inside come out flat, which
+  // the improvement cannot mend: such a surface wants remeshing to the size
+  // first.
+  std::size_t triangles_over_size = 0;
   int refinement_passes = 0;
   // Parts of refinement_seconds: SAMPLEPOINTS, FILTERPOINTS (one run per
   // thread) and INSERTPOINTS (the partitioned engine).
@@ -223,6 +230,7 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
   set_size_bounds(options, scaling, cm.size);
   surface_sizes(soup, cm);
   cm.size.rethrow_user_error();
+  stats.triangles_over_size = triangles_over_size(cm, options.radius_ratio);
   stats.colouring_seconds = seconds_since(t1);
 
   t1 = Clock::now();

@@ -120,6 +120,51 @@ inline void surface_sizes(const Surface_soup& soup, Constrained_mesh& cm)
   for(Vertex_id v = 0; v < m.vertices.size(); ++v) cm.size[v] = cm.size.bounded(cm.size[v], m.point(v), 0);
 }
 
+// Input triangles whose circumradius exceeds radius_ratio times h on one
+// of their sides (the largest of the corners' sizes under that subdomain's
+// caps), each counted once.  Refinement splits a tetrahedron whose
+// circumradius is over radius_ratio h, but the surface is never split: the
+// tetrahedra on such a triangle stay over the size, and those between it
+// and the small ones inside come out flat, which the improvement then
+// works on in vain (a unit tetrahedron meshed at h = 0.05: 2357 of its
+// 7771 tetrahedra under gamma 0.3, and the improvement 140 times the
+// refinement's time).  Called once the sizes are set.
+inline std::size_t triangles_over_size(const Constrained_mesh& cm, double radius_ratio)
+{
+  const Flat_storage& m = cm.mesh;
+  auto inside = [&](Tet_id t) { return !m.is_ghost(t) && cm.subdomain[t] >= 1; };
+  auto over_size = [&](Tet_id t, const Vertex_id corner[3]) {
+    double h = 0;
+    for(int i = 0; i < 3; ++i) h = std::max(h, cm.size.capped(cm.size[corner[i]], cm.subdomain[t]));
+    const double *a = m.point(corner[0]), *b = m.point(corner[1]), *c = m.point(corner[2]);
+    double u[3], v[3], w[3];
+    for(int k = 0; k < 3; ++k) {
+      u[k] = b[k] - a[k];
+      v[k] = c[k] - a[k];
+      w[k] = c[k] - b[k];
+    }
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    // R = |u| |v| |w| / (2 |u x v|).
+    const double edges = std::sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) *
+                                   (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+    return edges > 2 * radius_ratio * h * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  };
+  std::size_t count = 0;
+  for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
+    if(!m.is_live(t) || !inside(t)) continue;
+    for(int f = 0; f < 4; ++f) {
+      if(!cm.is_constrained(t, f)) continue;
+      const Tet_id u = m.neighbor(t, f);
+      const bool both = inside(u);
+      if(both && u < t) continue; // counted from u
+      const Vertex_id* tv = m.vertex_ids(t);
+      const Vertex_id corner[3] = {tv[(f + 1) & 3], tv[(f + 2) & 3], tv[(f + 3) & 3]};
+      count += over_size(t, corner) || (both && over_size(u, corner)) ? 1 : 0;
+    }
+  }
+  return count;
+}
+
 // The piecewise linear h at p, inside (or on) finite tetrahedron t.
 inline double linear_size(const Constrained_mesh& cm, Tet_id t, const double* p)
 {
