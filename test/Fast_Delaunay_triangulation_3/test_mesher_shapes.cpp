@@ -162,6 +162,7 @@ TEST(Mesher, QualityReportAgreesWithIndependentChecks)
       EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
     }
   };
+  ASSERT_GT(mesh.tetrahedra.size(), 5u);
   Mesh past_the_points = mesh;
   past_the_points.tetrahedra[5][3] = static_cast<std::uint32_t>(mesh.points.size());
   expect_refused(past_the_points, "quality_report: tetrahedron #5 refers to point #" +
@@ -169,6 +170,21 @@ TEST(Mesher, QualityReportAgreesWithIndependentChecks)
   Mesh untagged = mesh;
   untagged.subdomain.pop_back();
   expect_refused(untagged, "subdomain tags for " + std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
+  Mesh short_of_sizes = mesh;
+  short_of_sizes.size.pop_back();
+  expect_refused(short_of_sizes, std::to_string(mesh.size.size() - 1) + " sizes for " +
+                                     std::to_string(mesh.points.size()) + " points");
+  // Without sizes (what improve_mesh returns for a mesh without them) the
+  // edges are counted, not measured.
+  Mesh without_sizes = mesh;
+  without_sizes.size.clear();
+  const CGAL::Fast_mesher_3::Quality_report unsized = CGAL::Fast_mesher_3::quality_report(without_sizes, 2);
+  EXPECT_TRUE(q.has_sizes);
+  EXPECT_FALSE(unsized.has_sizes);
+  EXPECT_EQ(unsized.edges, q.edges);
+  EXPECT_EQ(unsized.edges_below_0_7h, 0u);
+  EXPECT_EQ(unsized.max_edge_over_h, 0.0);
+  EXPECT_EQ(unsized.tetrahedra_below_gamma_0_3, q.tetrahedra_below_gamma_0_3);
 }
 
 // The report's loops on two threads give every figure of one thread's.

@@ -517,7 +517,9 @@ inline void write_mesh(const std::string& path, const Tetrahedral_mesh& mesh)
 // The figures of Quality_report; `threads` share its loops (TBB), and the
 // figures are the same for any number.  Flat or inverted tetrahedra are
 // counted, not refused; std::invalid_argument if a tetrahedron refers to a
-// point the mesh lacks or the subdomain tags are not one per tetrahedron.
+// point the mesh lacks, the subdomain tags are not one per tetrahedron or
+// the sizes neither one per point nor none (then the edges are not
+// measured against h: Quality_report::has_sizes).
 inline Quality_report quality_report(const Tetrahedral_mesh& mesh, int threads = 1)
 {
   return Fast_Delaunay_triangulation_3_internal::mesher::quality_report(mesh, threads);

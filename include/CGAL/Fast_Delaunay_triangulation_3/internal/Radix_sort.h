@@ -45,7 +45,7 @@ inline int chunk_count(std::size_t n, int num_threads)
 
 // chunk_count(n, num_threads), lowered so that the chunks' own buffers,
 // `chunk_bytes` each, take at most `budget_bytes` (one chunk at least): for
-// loops whose chunks each hold something as large as the whole input.
+// loops whose chunks each hold an entry per vertex.
 inline int chunk_count_within(std::size_t n, int num_threads, std::size_t chunk_bytes, std::size_t budget_bytes)
 {
   const std::size_t affordable = std::max<std::size_t>(1, budget_bytes / std::max<std::size_t>(chunk_bytes, 1));

@@ -71,6 +71,8 @@ struct Quality_report
   std::vector<double> radius_edge_bin_lower;
   std::vector<std::size_t> radius_edge_histogram;
   double max_radius_edge = 0;
+  // Edge length over the mean h of its ends; all 0 without sizes.
+  bool has_sizes = true; // the mesh has a size per point
   double min_edge_over_h = 0, max_edge_over_h = 0, mean_edge_over_h = 0;
   std::size_t edges = 0, edges_below_0_7h = 0;
   std::size_t inverted_tetrahedra = 0;     // orientation <= 0, exact
@@ -113,11 +115,16 @@ inline std::array<std::uint32_t, 3> sorted_facet(const std::array<std::uint32_t,
 inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh,
                                                           int threads = 1)
 {
-  // The loops below index the points by the tetrahedra's vertex ids and the
-  // tags by tetrahedron: a mesh they would read past is refused first.
+  // The loops below index the points and sizes by the tetrahedra's vertex
+  // ids and the tags by tetrahedron: a mesh they would read past is refused
+  // first.  Without sizes (improve_mesh keeps a mesh's none) the edges are
+  // counted, not measured against h.
   if(mesh.subdomain.size() != mesh.tetrahedra.size())
     throw std::invalid_argument("quality_report: " + std::to_string(mesh.subdomain.size()) + " subdomain tags for " +
                                 std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
+  if(!mesh.size.empty() && mesh.size.size() != mesh.points.size())
+    throw std::invalid_argument("quality_report: " + std::to_string(mesh.size.size()) + " sizes for " +
+                                std::to_string(mesh.points.size()) + " points (give one per point, or none)");
   for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
     for(std::uint32_t v : mesh.tetrahedra[t])
       if(v >= mesh.points.size())
@@ -125,6 +132,7 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
                                     std::to_string(v) + ", past the " + std::to_string(mesh.points.size()) +
                                     " points");
   CGAL::Fast_mesher_3::Quality_report q;
+  q.has_sizes = !mesh.size.empty();
   q.vertices = mesh.points.size();
   q.tetrahedra = mesh.tetrahedra.size();
   q.boundary_triangles = mesh.triangles.size();
@@ -323,9 +331,12 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
         }
       }
       if(edge_to_itself) ends.push_back(a);
-      // Each edge once, (a, b) with a <= b: its length over the mean h of its ends.
+      // Each edge once, (a, b) with a <= b: its length over the mean h of its
+      // ends (where the mesh has sizes).
       double sum = 0;
-      for(const std::uint32_t b : ends) {
+      const std::size_t measured = q.has_sizes ? ends.size() : 0;
+      for(std::size_t k = 0; k < measured; ++k) {
+        const std::uint32_t b = ends[k];
         const double ratio =
             distance(mesh.points[a].data(), mesh.points[b].data()) / ((mesh.size[a] + mesh.size[b]) / 2);
         tally.min_edge = std::min(tally.min_edge, ratio);
@@ -384,6 +395,7 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   double sum = 0;
   for(const double s : edge_sum) sum += s;
   if(q.edges != 0) q.mean_edge_over_h = sum / q.edges;
+  if(!q.has_sizes) q.min_edge_over_h = q.max_edge_over_h = q.mean_edge_over_h = 0;
   q.extra_boundary_facets = boundary_facets - input_on_boundary;
   return q;
 }
@@ -418,8 +430,11 @@ inline void print_quality_report(std::ostream& out, const CGAL::Fast_mesher_3::Q
       out << "[" << q.radius_edge_bin_lower[b] << ", inf) ";
     out << q.radius_edge_histogram[b] << "\n";
   }
-  out << "edge length / h: min " << q.min_edge_over_h << ", mean " << q.mean_edge_over_h << ", max "
-      << q.max_edge_over_h << " (" << q.edges_below_0_7h << " of " << q.edges << " edges below 0.7)\n";
+  if(q.has_sizes)
+    out << "edge length / h: min " << q.min_edge_over_h << ", mean " << q.mean_edge_over_h << ", max "
+        << q.max_edge_over_h << " (" << q.edges_below_0_7h << " of " << q.edges << " edges below 0.7)\n";
+  else
+    out << "edges: " << q.edges << " (no sizes in the mesh: none measured against h)\n";
   out << "inverted tetrahedra: " << q.inverted_tetrahedra << "\n";
   out << "boundary equals the input: " << (q.boundary_equals_input() ? "yes" : "NO") << " ("
       << q.missing_input_triangles << " input triangles missing, " << q.extra_boundary_facets

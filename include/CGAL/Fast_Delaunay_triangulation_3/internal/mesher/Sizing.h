@@ -133,33 +133,38 @@ inline std::size_t triangles_over_size(const Constrained_mesh& cm, double radius
 {
   const Flat_storage& m = cm.mesh;
   auto inside = [&](Tet_id t) { return !m.is_ghost(t) && cm.subdomain[t] >= 1; };
-  auto over_size = [&](Tet_id t, const Vertex_id corner[3]) {
+  // The corners' largest h under the caps of the subdomain of tetrahedron t.
+  auto size_beside = [&](Tet_id t, const Vertex_id corner[3]) {
     double h = 0;
     for(int i = 0; i < 3; ++i) h = std::max(h, cm.size.capped(cm.size[corner[i]], cm.subdomain[t]));
-    const double *a = m.point(corner[0]), *b = m.point(corner[1]), *c = m.point(corner[2]);
-    double u[3], v[3], w[3];
-    for(int k = 0; k < 3; ++k) {
-      u[k] = b[k] - a[k];
-      v[k] = c[k] - a[k];
-      w[k] = c[k] - b[k];
-    }
-    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    // R = |u| |v| |w| / (2 |u x v|).
-    const double edges = std::sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) *
-                                   (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
-    return edges > 2 * radius_ratio * h * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    return h;
   };
   std::size_t count = 0;
   for(Tet_id t = 0; t < m.number_of_slots(); ++t) {
     if(!m.is_live(t) || !inside(t)) continue;
     for(int f = 0; f < 4; ++f) {
       if(!cm.is_constrained(t, f)) continue;
-      const Tet_id u = m.neighbor(t, f);
-      const bool both = inside(u);
-      if(both && u < t) continue; // counted from u
+      const Tet_id other = m.neighbor(t, f);
+      const bool both_sides = inside(other);
+      if(both_sides && other < t) continue; // counted from `other`
       const Vertex_id* tv = m.vertex_ids(t);
       const Vertex_id corner[3] = {tv[(f + 1) & 3], tv[(f + 2) & 3], tv[(f + 3) & 3]};
-      count += over_size(t, corner) || (both && over_size(u, corner)) ? 1 : 0;
+      double h = size_beside(t, corner);
+      if(both_sides) h = std::min(h, size_beside(other, corner));
+      // R = |ab| |ac| |bc| / (2 |ab x ac|); the mesher's unit scale keeps
+      // the product of the squared lengths far from overflow.
+      const double *a = m.point(corner[0]), *b = m.point(corner[1]), *c = m.point(corner[2]);
+      double ab[3], ac[3], bc[3];
+      for(int k = 0; k < 3; ++k) {
+        ab[k] = b[k] - a[k];
+        ac[k] = c[k] - a[k];
+        bc[k] = c[k] - b[k];
+      }
+      const double normal[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+                                ab[0] * ac[1] - ab[1] * ac[0]};
+      auto squared = [](const double* x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2]; };
+      const double edge_length_product = std::sqrt(squared(ab) * squared(ac) * squared(bc));
+      count += edge_length_product > 2 * radius_ratio * h * std::sqrt(squared(normal)) ? 1 : 0;
     }
   }
   return count;
