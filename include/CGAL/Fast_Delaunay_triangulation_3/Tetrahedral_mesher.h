@@ -357,23 +357,15 @@ inline Constrained_mesh constrained_mesh_of(const Tetrahedral_mesh& mesh, const 
 {
   const std::size_t n = mesh.points.size();
   if(mesh.tetrahedra.empty()) refuse_mesh("the mesh has no tetrahedra");
-  if(mesh.subdomain.size() != mesh.tetrahedra.size())
-    refuse_mesh(std::to_string(mesh.subdomain.size()) + " subdomain tags for " +
-                std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
-  if(!mesh.size.empty() && mesh.size.size() != n)
-    refuse_mesh(std::to_string(mesh.size.size()) + " sizes for " + std::to_string(n) + " points (give one per point, or none)");
+  const std::string defect = index_defect(mesh);
+  if(!defect.empty()) refuse_mesh(defect);
   if(n >= std::size_t(ghost_vertex)) refuse_mesh("too many points");
   std::vector<std::array<double, 3>> points(n);
   for(std::size_t i = 0; i < n; ++i)
     for(int a = 0; a < 3; ++a) points[i][a] = scaling.to_unit(mesh.points[i][a]);
   std::vector<std::array<Vertex_id, 4>> tets(mesh.tetrahedra.size());
   for(std::size_t t = 0; t < tets.size(); ++t) {
-    for(int i = 0; i < 4; ++i) {
-      if(mesh.tetrahedra[t][i] >= n)
-        refuse_mesh("tetrahedron #" + std::to_string(t) + " refers to point #" + std::to_string(mesh.tetrahedra[t][i]) +
-                    ", past the " + std::to_string(n) + " points");
-      tets[t][i] = mesh.tetrahedra[t][i];
-    }
+    for(int i = 0; i < 4; ++i) tets[t][i] = mesh.tetrahedra[t][i];
     if(mesh.subdomain[t] < 1) refuse_mesh("tetrahedron #" + std::to_string(t) + " has subdomain " +
                                           std::to_string(mesh.subdomain[t]) + " (subdomains are numbered from 1)");
     if(orientation(points[tets[t][0]].data(), points[tets[t][1]].data(), points[tets[t][2]].data(),

@@ -119,18 +119,8 @@ inline CGAL::Fast_mesher_3::Quality_report quality_report(const CGAL::Fast_meshe
   // ids and the tags by tetrahedron: a mesh they would read past is refused
   // first.  Without sizes (improve_mesh keeps a mesh's none) the edges are
   // counted, not measured against h.
-  if(mesh.subdomain.size() != mesh.tetrahedra.size())
-    throw std::invalid_argument("quality_report: " + std::to_string(mesh.subdomain.size()) + " subdomain tags for " +
-                                std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
-  if(!mesh.size.empty() && mesh.size.size() != mesh.points.size())
-    throw std::invalid_argument("quality_report: " + std::to_string(mesh.size.size()) + " sizes for " +
-                                std::to_string(mesh.points.size()) + " points (give one per point, or none)");
-  for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
-    for(std::uint32_t v : mesh.tetrahedra[t])
-      if(v >= mesh.points.size())
-        throw std::invalid_argument("quality_report: tetrahedron #" + std::to_string(t) + " refers to point #" +
-                                    std::to_string(v) + ", past the " + std::to_string(mesh.points.size()) +
-                                    " points");
+  const std::string defect = index_defect(mesh);
+  if(!defect.empty()) throw std::invalid_argument("quality_report: " + defect);
   CGAL::Fast_mesher_3::Quality_report q;
   q.has_sizes = !mesh.size.empty();
   q.vertices = mesh.points.size();

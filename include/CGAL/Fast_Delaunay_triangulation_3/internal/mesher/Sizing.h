@@ -17,6 +17,7 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Constrained_mesh.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Nearest_point.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Surface_input.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Tetrahedron_quality.h>
 
 #include <algorithm>
 #include <cmath>
@@ -152,19 +153,17 @@ inline std::size_t triangles_over_size(const Constrained_mesh& cm, double radius
       double h = size_beside(t, corner);
       if(both_sides) h = std::min(h, size_beside(other, corner));
       // R = |ab| |ac| |bc| / (2 |ab x ac|); the mesher's unit scale keeps
-      // the product of the squared lengths far from overflow.
+      // the products far from overflow.
       const double *a = m.point(corner[0]), *b = m.point(corner[1]), *c = m.point(corner[2]);
-      double ab[3], ac[3], bc[3];
+      double ab[3], ac[3], bc[3], normal[3];
       for(int k = 0; k < 3; ++k) {
         ab[k] = b[k] - a[k];
         ac[k] = c[k] - a[k];
         bc[k] = c[k] - b[k];
       }
-      const double normal[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
-                                ab[0] * ac[1] - ab[1] * ac[0]};
-      auto squared = [](const double* x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2]; };
-      const double edge_length_product = std::sqrt(squared(ab) * squared(ac) * squared(bc));
-      count += edge_length_product > 2 * radius_ratio * h * std::sqrt(squared(normal)) ? 1 : 0;
+      quality_detail::cross(ab, ac, normal);
+      using quality_detail::norm;
+      count += norm(ab) * norm(ac) * norm(bc) > 2 * radius_ratio * h * norm(normal) ? 1 : 0;
     }
   }
   return count;

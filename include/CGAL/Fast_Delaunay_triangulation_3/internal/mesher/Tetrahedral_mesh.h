@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -38,6 +39,28 @@ struct Tetrahedral_mesh
 
 namespace Fast_Delaunay_triangulation_3_internal {
 namespace mesher {
+
+// What makes `mesh` unreadable by index, or empty if nothing: subdomain
+// tags other than one per tetrahedron, sizes neither one per point nor
+// none, a tetrahedron referring to a point the mesh lacks.  The callers
+// that take a user's mesh (improve_mesh, quality_report) refuse it with
+// this text after their own name.
+inline std::string index_defect(const CGAL::Fast_mesher_3::Tetrahedral_mesh& mesh)
+{
+  const std::size_t n = mesh.points.size();
+  if(mesh.subdomain.size() != mesh.tetrahedra.size())
+    return std::to_string(mesh.subdomain.size()) + " subdomain tags for " + std::to_string(mesh.tetrahedra.size()) +
+           " tetrahedra";
+  if(!mesh.size.empty() && mesh.size.size() != n)
+    return std::to_string(mesh.size.size()) + " sizes for " + std::to_string(n) +
+           " points (give one per point, or none)";
+  for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
+    for(std::uint32_t v : mesh.tetrahedra[t])
+      if(v >= n)
+        return "tetrahedron #" + std::to_string(t) + " refers to point #" + std::to_string(v) + ", past the " +
+               std::to_string(n) + " points";
+  return std::string();
+}
 
 inline CGAL::Fast_mesher_3::Tetrahedral_mesh extract_mesh(const Constrained_mesh& cm,
                                                                          const Surface_soup& soup)
