@@ -19,6 +19,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 #ifdef FDT3_PYTHON_WITH_MESHER
+#include <CGAL/Fast_Delaunay_triangulation_3/Surface_remeshing.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 #endif
 
@@ -662,11 +663,26 @@ std::vector<std::array<Index, K>> index_rows(const py::handle& given, std::size_
   return out;
 }
 
+// remesh_surface: None, or the edge length the surfaces are remeshed to
+// before they are meshed (Surface_remeshing.h).
+CGAL::Fast_mesher_3::Surface_remeshing_options remeshing_options(const py::object& remesh_surface)
+{
+  CGAL::Fast_mesher_3::Surface_remeshing_options remeshing; // target_edge_length 0: no remeshing
+  if(!remesh_surface.is_none()) {
+    remeshing.target_edge_length = remesh_surface.cast<double>();
+    if(!(remeshing.target_edge_length > 0) || std::isinf(remeshing.target_edge_length))
+      throw py::value_error("mesh: remesh_surface must be a positive, finite edge length");
+  }
+  return remeshing;
+}
+
 py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py::object& size,
-               const py::object& threads, bool optimize, const py::object& size_field, double min_dihedral_target)
+               const py::object& threads, bool optimize, const py::object& size_field, double min_dihedral_target,
+               const py::object& remesh_surface)
 {
   const CGAL::Fast_mesher_3::Mesher_options options =
       mesher_options(size, threads, optimize, size_field, min_dihedral_target);
+  const CGAL::Fast_mesher_3::Surface_remeshing_options remeshing = remeshing_options(remesh_surface);
   const Double_array v = point_rows(vertices, "vertices");
   std::vector<std::array<double, 3>> points(static_cast<std::size_t>(v.shape(0)));
   if(!points.empty()) std::copy(v.data(), v.data() + 3 * v.shape(0), &points[0][0]);
@@ -675,7 +691,13 @@ py::tuple mesh(const py::handle& vertices, const py::handle& triangles, const py
   CGAL::Fast_mesher_3::Tetrahedral_mesh result;
   {
     py::gil_scoped_release unlocked;
-    result = CGAL::Fast_mesher_3::mesh_surfaces(points, tris, options);
+    if(remeshing.target_edge_length > 0) {
+      const CGAL::Fast_mesher_3::Surface_triangles surface =
+          CGAL::Fast_mesher_3::remesh_surfaces(points, tris, remeshing);
+      result = CGAL::Fast_mesher_3::mesh_surfaces(surface.points, surface.triangles, options);
+    } else {
+      result = CGAL::Fast_mesher_3::mesh_surfaces(points, tris, options);
+    }
   }
   return mesh_arrays(result);
 }
@@ -728,15 +750,23 @@ py::tuple improve_mesh(const py::handle& points, const py::handle& tets, const p
 }
 
 py::tuple mesh_files(const std::vector<std::string>& paths, const py::object& size, const py::object& threads,
-                     bool optimize, const py::object& size_field, double min_dihedral_target)
+                     bool optimize, const py::object& size_field, double min_dihedral_target,
+                     const py::object& remesh_surface)
 {
   const CGAL::Fast_mesher_3::Mesher_options options =
       mesher_options(size, threads, optimize, size_field, min_dihedral_target);
+  const CGAL::Fast_mesher_3::Surface_remeshing_options remeshing = remeshing_options(remesh_surface);
   if(paths.empty()) throw py::value_error("mesh_files: no file given");
   CGAL::Fast_mesher_3::Tetrahedral_mesh result;
   {
     py::gil_scoped_release unlocked;
-    result = CGAL::Fast_mesher_3::mesh_surface_files(paths, options);
+    if(remeshing.target_edge_length > 0) {
+      const CGAL::Fast_mesher_3::Surface_triangles surface =
+          CGAL::Fast_mesher_3::remesh_surface_files(paths, remeshing);
+      result = CGAL::Fast_mesher_3::mesh_surfaces(surface.points, surface.triangles, options);
+    } else {
+      result = CGAL::Fast_mesher_3::mesh_surface_files(paths, options);
+    }
   }
   return mesh_arrays(result);
 }
@@ -828,7 +858,7 @@ equal to an earlier vertex's point names that vertex.)")
   const double default_dihedral_target = CGAL::Fast_mesher_3::Mesher_options().min_dihedral_target;
   m.def("mesh", &mesh, py::arg("vertices"), py::arg("triangles"), py::arg("size") = py::none(),
         py::arg("threads") = py::none(), py::arg("optimize") = true, py::arg("size_field") = py::none(),
-        py::arg("min_dihedral_target") = default_dihedral_target,
+        py::arg("min_dihedral_target") = default_dihedral_target, py::arg("remesh_surface") = py::none(),
         R"(Tetrahedral mesh of the volumes bounded by closed triangulated surfaces.
 
 vertices (n, 3), triangles (t, 3) indices into vertices.  Returns (points,
@@ -843,7 +873,11 @@ H in subdomain S) and 'X Y Z H' (background points: h at most the nearest
 one's H); a malformed line raises ValueError naming it.  optimize: improve
 the tetrahedra under gamma 0.3 or with a dihedral angle under
 min_dihedral_target degrees (0: gamma alone; out of [0, 70] raises
-ValueError).  A surface that is not closed, oriented,
+ValueError).  remesh_surface: an edge length to remesh the surfaces to
+first (CGAL's isotropic remeshing, each surface alone, edges sharper than
+60 degrees kept as polylines); the boundary is then not the given
+triangles, and where the surface is coarser than the size this removes the
+flat tetrahedra its large triangles force.  A surface that is not closed, oriented,
 manifold and free of self-intersections raises ValueError naming the
 triangles.)");
   m.def("improve_mesh", &improve_mesh, py::arg("points"), py::arg("tets"), py::arg("subdomains") = py::none(),
@@ -869,7 +903,7 @@ facet in three tetrahedra, a boundary that is not closed, a triangle that
 is not a facet) raises ValueError naming the defect.)");
   m.def("mesh_files", &mesh_files, py::arg("paths"), py::arg("size") = py::none(), py::arg("threads") = py::none(),
         py::arg("optimize") = true, py::arg("size_field") = py::none(),
-        py::arg("min_dihedral_target") = default_dihedral_target,
+        py::arg("min_dihedral_target") = default_dihedral_target, py::arg("remesh_surface") = py::none(),
         "mesh() of the surfaces in files (.off .stl .obj .ply).");
 #endif
 }

@@ -72,6 +72,22 @@ def test_bad_options_raise():
         fast_delaunay_3.mesh_files([])
 
 
+def test_a_remeshed_surface_gives_good_tetrahedra_where_its_large_triangles_did_not():
+    as_given = fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=0.1, threads=1)
+    points, tets, _ = fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, size=0.1, threads=1, remesh_surface=0.1)
+    volumes = signed_volumes(points, tets)
+    assert (volumes > 0).all() and volumes.sum() == pytest.approx(1.0, rel=1e-9)
+    assert ((points >= -1e-12) & (points <= 1 + 1e-12)).all()
+    # The twelve triangles, 1.4 times the size across, force flat tetrahedra along them; remeshed, none.
+    assert (gamma(*as_given[:2]) < 0.3).sum() > 0
+    assert (gamma(points, tets) < 0.3).sum() == 0
+    for bad in (0, -1, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="remesh_surface must be a positive"):
+            fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, remesh_surface=bad)
+    with pytest.raises(ValueError, match="would give about"):
+        fast_delaunay_3.mesh(CUBE_POINTS, CUBE_TRIANGLES, remesh_surface=1e-6)
+
+
 def test_the_improvement_keeps_the_volume_and_removes_slivers():
     path = os.path.join(os.environ.get("FDT3_CGAL_DATA_DIR", ""), "fandisk.off")
     if not os.path.exists(path):

@@ -2,22 +2,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // fast_mesh_3 INPUT... -o OUTPUT [--size H] [--size-field FILE] [--threads K]
-//             [--optimize 0|1] [--quality-threshold G] [--dihedral-target D] [--quiet]
+//             [--optimize 0|1] [--quality-threshold G] [--dihedral-target D]
+//             [--remesh-surface L] [--quiet]
 //
 // Meshes the volumes bounded by the closed surfaces of the input files (OFF,
 // STL, OBJ, PLY) with the Delaunay-refinement mesher of the paper's §4,
 // improves the tetrahedra under the gamma threshold or the dihedral target
-// (unless --optimize 0)
+// (unless --optimize 0); with --remesh-surface, the surfaces are first
+// remeshed to edge length L (Surface_remeshing.h), so the boundary is no
+// longer the input's triangles
 // and writes OUTPUT as Medit (.mesh), VTK (.vtu) or Gmsh 4.1 (.msh), by
 // extension.
 // Prints the phases' times, a progress line per refinement pass (one line
 // redrawn in place when stdout is a terminal) and the quality report,
 // unless --quiet.
 
+#include <CGAL/Fast_Delaunay_triangulation_3/Surface_remeshing.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
 #include "Progress_bar.h"
 
+#include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -30,7 +36,7 @@ int usage(const char* program)
 {
   std::cerr << "usage: " << program
             << " INPUT... -o OUTPUT [--size H] [--size-field FILE] [--threads K] [--optimize 0|1]\n"
-            << "       [--quality-threshold G] [--dihedral-target D] [--quiet]\n"
+            << "       [--quality-threshold G] [--dihedral-target D] [--remesh-surface L] [--quiet]\n"
             << "  INPUT   closed triangulated surfaces (.off .stl .obj .ply); nested surfaces give several subdomains\n"
             << "  OUTPUT  .mesh (Medit), .vtu (VTK) or .msh (Gmsh 4.1)\n"
             << "  --size H     maximum mesh size (default: the surface's edge lengths, interpolated)\n"
@@ -43,6 +49,9 @@ int usage(const char* program)
             << "  --quality-threshold G  gamma = 3 r_in / r_circ to reach, in (0, 1) (default 0.3)\n"
             << "  --dihedral-target D    smallest dihedral angle to reach, degrees in [0, 70] (default 15;\n"
             << "                         0: gamma alone)\n"
+            << "  --remesh-surface L     remesh the surfaces to edge length L first (sharp edges, over 60\n"
+            << "                         degrees, kept as polylines): the boundary is then not the input's\n"
+            << "                         triangles, and h follows L where no smaller size is given\n"
             << "  --quiet      print nothing but errors\n";
   return 2;
 }
@@ -55,6 +64,7 @@ int main(int argc, char** argv)
   std::string output, size_field;
   CGAL::Fast_mesher_3::Mesher_options options;
   bool quiet = false;
+  CGAL::Fast_mesher_3::Surface_remeshing_options remeshing; // target_edge_length 0: no remeshing
   for(int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -75,7 +85,11 @@ int main(int argc, char** argv)
         options.optimize = v == "1";
       } else if(arg == "--quality-threshold") options.quality_threshold = std::stod(value());
       else if(arg == "--dihedral-target") options.min_dihedral_target = std::stod(value());
-      else if(arg == "--quiet") quiet = true;
+      else if(arg == "--remesh-surface") {
+        remeshing.target_edge_length = std::stod(value());
+        if(!(remeshing.target_edge_length > 0) || std::isinf(remeshing.target_edge_length))
+          throw std::invalid_argument("length");
+      } else if(arg == "--quiet") quiet = true;
       else if(arg == "-h" || arg == "--help") return usage(argv[0]);
       else if(!arg.empty() && arg[0] == '-') {
         std::cerr << "fast_mesh_3: unknown option " << arg << "\n";
@@ -116,10 +130,26 @@ int main(int argc, char** argv)
 
   try {
     CGAL::Fast_mesher_3::Mesher_statistics stats;
-    const CGAL::Fast_mesher_3::Tetrahedral_mesh mesh = CGAL::Fast_mesher_3::mesh_surface_files(inputs, options, &stats);
+    double remeshing_seconds = 0;
+    std::size_t remeshed_triangles = 0;
+    CGAL::Fast_mesher_3::Tetrahedral_mesh mesh;
+    if(remeshing.target_edge_length > 0) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const CGAL::Fast_mesher_3::Surface_triangles surface =
+          CGAL::Fast_mesher_3::remesh_surface_files(inputs, remeshing);
+      remeshing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      remeshed_triangles = surface.triangles.size();
+      mesh = CGAL::Fast_mesher_3::mesh_surfaces(surface.points, surface.triangles, options, &stats);
+    } else {
+      mesh = CGAL::Fast_mesher_3::mesh_surface_files(inputs, options, &stats);
+    }
     CGAL::Fast_mesher_3::write_mesh(output, mesh);
     bar.finish();
     if(!quiet) {
+      if(remeshing.target_edge_length > 0)
+        std::cout << "surface remeshing       " << remeshing_seconds << " s (read, checked, remeshed to "
+                  << remeshed_triangles << " triangles of edge length about " << remeshing.target_edge_length
+                  << ")\n";
       std::cout << "input (read and check)  " << stats.input_seconds << " s\n"
                 << "empty mesh              " << stats.empty_mesh_seconds << " s\n"
                 << "boundary recovery       " << stats.recovery_seconds << " s ("
@@ -138,7 +168,8 @@ int main(int argc, char** argv)
                         ? std::string("\n")
                         : " (" + std::to_string(stats.triangles_over_size) +
                               " input triangles over the size next to them: the surface is never split, so the "
-                              "tetrahedra along them stay large or flat; remesh the surface to the size first)\n")
+                              "tetrahedra along them stay large or flat; remesh the surface to the size first: "
+                              "--remesh-surface L)\n")
                 << "refinement              " << stats.refinement_seconds << " s (" << stats.refinement_passes
                 << " passes, " << stats.refinement_points << " points inserted, " << stats.filtered_points
                 << " filtered, " << stats.aborted_points << " aborted; "

@@ -27,6 +27,7 @@
 //                    mesh of your own: improve_mesh
 //
 // Also as CGAL's Mesh_complex_3_in_triangulation_3: mesh_surfaces_to_c3t3.
+// Surfaces coarser than the size: remesh them first (Surface_remeshing.h).
 //
 // Sizes: maximum_size, subdomain_sizes, size_function, or a size-field
 // file (read_size_field).  Not yet: surfaces may not touch.
@@ -129,7 +130,7 @@ struct Mesher_statistics
   // surface is never split, so the tetrahedra on these stay over the size
   // and those between them and the smaller ones inside come out flat, which
   // the improvement cannot mend: such a surface wants remeshing to the size
-  // first.
+  // first (remesh_surfaces, Surface_remeshing.h).
   std::size_t triangles_over_size = 0;
   int refinement_passes = 0;
   // Parts of refinement_seconds: SAMPLEPOINTS, FILTERPOINTS (one run per

@@ -1,0 +1,169 @@
+// Copyright (c) 2026 Fast_Delaunay_triangulation_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Remeshing the mesher's input surfaces to a length (Surface_remeshing.h):
+// the result lies on the input, keeps its sharp edges and corners and the
+// volume it encloses, each surface apart; meshed at that length it has no
+// triangle over the size and no tetrahedron under gamma 0.3, where the
+// input's own large triangles left some.  Bad options and bad surfaces are
+// refused with the reason.
+
+#include <CGAL/Fast_Delaunay_triangulation_3/Surface_remeshing.h>
+#include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
+
+#include <gtest/gtest.h>
+
+#include "mesher_shapes.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace test_mesher_surface_remeshing {
+
+using namespace CGAL::Fast_mesher_3;
+
+mesher_shapes::Surface as_shape(const Surface_triangles& s) { return {s.points, s.triangles}; }
+
+std::vector<double> edge_lengths(const Surface_triangles& s)
+{
+  std::vector<double> lengths;
+  for(const auto& t : s.triangles)
+    for(int i = 0; i < 3; ++i) {
+      const auto& a = s.points[t[i]];
+      const auto& b = s.points[t[(i + 1) % 3]];
+      lengths.push_back(std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                  (a[2] - b[2]) * (a[2] - b[2])));
+    }
+  std::sort(lengths.begin(), lengths.end());
+  return lengths;
+}
+
+// How many of p's coordinates are lo or hi (to 1e-12): 1 on a face of the
+// cube [lo, hi]^3, 2 on an edge, 3 at a corner; 0 off its surface.
+int coordinates_on_cube(const std::array<double, 3>& p, double lo, double hi)
+{
+  int on = 0;
+  for(double x : p) on += std::abs(x - lo) < 1e-12 || std::abs(x - hi) < 1e-12 ? 1 : 0;
+  return on;
+}
+
+bool inside_closed_cube(const std::array<double, 3>& p, double lo, double hi)
+{
+  for(double x : p)
+    if(x < lo - 1e-12 || x > hi + 1e-12) return false;
+  return true;
+}
+
+TEST(SurfaceRemeshing, ACubeKeepsItsFacesEdgesAndCorners)
+{
+  const mesher_shapes::Surface cube = mesher_shapes::cube(0, 1);
+  const double length = 0.1;
+  const Surface_triangles remeshed = remesh_surfaces(cube.points, cube.triangles, {length});
+  ASSERT_GT(remeshed.triangles.size(), 600u); // six unit faces in triangles of about 0.0043 each: ~1400
+  std::size_t corners = 0, on_edges = 0;
+  for(const auto& p : remeshed.points) {
+    ASSERT_TRUE(inside_closed_cube(p, 0, 1));
+    const int on = coordinates_on_cube(p, 0, 1);
+    ASSERT_GE(on, 1) << "a vertex off the cube's faces";
+    corners += on == 3 ? 1 : 0;
+    on_edges += on == 2 ? 1 : 0;
+  }
+  EXPECT_EQ(corners, 8u);
+  EXPECT_GE(on_edges, 12u * 7); // each unit edge split into about ten
+  EXPECT_NEAR(mesher_shapes::enclosed_volume(as_shape(remeshed)), 1.0, 1e-9);
+  const std::vector<double> lengths = edge_lengths(remeshed);
+  const double median = lengths[lengths.size() / 2];
+  EXPECT_GT(median, 0.7 * length);
+  EXPECT_LT(median, 4.0 / 3 * length);
+  EXPECT_LT(lengths.back(), 2 * length);
+
+  // Meshed at the same size: the input's twelve triangles are over it and
+  // leave bad tetrahedra along them; the remeshed surface leaves none.
+  Mesher_options options;
+  options.maximum_size = length;
+  Mesher_statistics as_given, after_remeshing;
+  mesh_surfaces(cube.points, cube.triangles, options, &as_given);
+  const Tetrahedral_mesh mesh = mesh_surfaces(remeshed.points, remeshed.triangles, options, &after_remeshing);
+  EXPECT_EQ(as_given.triangles_over_size, 12u);
+  EXPECT_GT(as_given.improvement.bad_after, 0u);
+  EXPECT_EQ(after_remeshing.triangles_over_size, 0u);
+  EXPECT_EQ(after_remeshing.improvement.bad_after, 0u);
+  const Quality_report report = quality_report(mesh, 1);
+  EXPECT_GE(report.min_dihedral_degrees, options.min_dihedral_target);
+  EXPECT_TRUE(report.boundary_equals_input());
+}
+
+TEST(SurfaceRemeshing, NestedSurfacesAreRemeshedApart)
+{
+  const mesher_shapes::Surface s = mesher_shapes::combine(mesher_shapes::cube(0, 1), mesher_shapes::cube(0.4, 0.6));
+  const double length = 0.15;
+  const Surface_triangles remeshed = remesh_surfaces(s.points, s.triangles, {length});
+  std::size_t outer = 0, inner = 0;
+  for(const auto& p : remeshed.points) {
+    const bool on_outer = coordinates_on_cube(p, 0, 1) >= 1 && inside_closed_cube(p, 0, 1);
+    const bool on_inner = coordinates_on_cube(p, 0.4, 0.6) >= 1 && inside_closed_cube(p, 0.4, 0.6);
+    ASSERT_TRUE(on_outer != on_inner) << "a vertex on neither cube, or on both";
+    (on_outer ? outer : inner) += 1;
+  }
+  EXPECT_GT(outer, 200u);
+  EXPECT_GE(inner, 8u); // the small cube's faces are about one length wide: little more than its corners
+  EXPECT_NEAR(mesher_shapes::enclosed_volume(as_shape(remeshed)), 1.0 + 0.2 * 0.2 * 0.2, 1e-9);
+  const Tetrahedral_mesh mesh = mesh_surfaces(remeshed.points, remeshed.triangles);
+  EXPECT_EQ(mesh.number_of_subdomains, 2);
+}
+
+TEST(SurfaceRemeshing, ASmoothSurfaceStaysOnItsTriangles)
+{
+  const mesher_shapes::Surface sphere = mesher_shapes::icosphere(2);
+  Surface_remeshing_options options;
+  options.target_edge_length = 0.1;
+  const Surface_triangles remeshed = remesh_surfaces(sphere.points, sphere.triangles, options);
+  // Projected on the input's flat triangles: between their inscribed and
+  // circumscribed spheres (the level-2 icosphere's faces are within 3% of
+  // the unit sphere).
+  for(const auto& p : remeshed.points) {
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    ASSERT_GT(r, 0.97);
+    ASSERT_LT(r, 1 + 1e-12);
+  }
+  const double input_volume = mesher_shapes::enclosed_volume(sphere);
+  EXPECT_NEAR(mesher_shapes::enclosed_volume(as_shape(remeshed)), input_volume, 0.01 * input_volume);
+  const std::vector<double> lengths = edge_lengths(remeshed);
+  EXPECT_GT(lengths[lengths.size() / 2], 0.7 * options.target_edge_length);
+  EXPECT_LT(lengths[lengths.size() / 2], 4.0 / 3 * options.target_edge_length);
+}
+
+TEST(SurfaceRemeshing, BadOptionsAndSurfacesAreRefused)
+{
+  const mesher_shapes::Surface cube = mesher_shapes::cube(0, 1);
+  auto message_of = [&](const Surface_remeshing_options& options, const mesher_shapes::Surface& s) -> std::string {
+    try {
+      remesh_surfaces(s.points, s.triangles, options);
+    } catch(const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  for(double length : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    EXPECT_NE(message_of({length}, cube).find("target_edge_length must be positive"), std::string::npos) << length;
+  EXPECT_NE(message_of({1e-6}, cube).find("would give about"), std::string::npos);
+  Surface_remeshing_options options;
+  options.target_edge_length = 0.1;
+  options.sharp_edge_angle = 200;
+  EXPECT_NE(message_of(options, cube).find("sharp_edge_angle"), std::string::npos);
+  options.sharp_edge_angle = 60;
+  options.iterations = 0;
+  EXPECT_NE(message_of(options, cube).find("iterations"), std::string::npos);
+
+  mesher_shapes::Surface open = cube;
+  open.triangles.pop_back();
+  EXPECT_THROW(remesh_surfaces(open.points, open.triangles, {0.1}), Invalid_surface);
+  EXPECT_THROW(remesh_surface_files({"no such file.off"}, {0.1}), std::exception);
+}
+
+} // namespace test_mesher_surface_remeshing
