@@ -17,7 +17,9 @@
 // Every tool runs as a finite-element user runs it, with its mesh improvement: ours (Mesh_improvement.h, on by
 // default), HXT with Gmsh's default Mesh.Optimize = 1 and, as a second row, Mesh.OptimizeNetgen = 1, TetGen with its
 // default optimisation, Mesh_3 with perturb_mesh_3 and exude_mesh_3.  One row of each without it (ours with
-// optimize off, HXT with Mesh.Optimize = 0, TetGen -O0) shows what the step costs and gains.
+// optimize off, HXT with Mesh.Optimize = 0, TetGen -O0) shows what the step costs and gains.  Mesh_3 samples the
+// surface anew; the row ours-remeshed does the same for ours (Surface_remeshing.h: CGAL's isotropic remeshing to
+// Mesh_3's constant, sharp edges kept), so that its quality is compared with Mesh_3's on equal terms.
 
 // Gmsh runs in a helper process, mesher_benchmark_gmsh (mesher_benchmark_io.h says why); without Gmsh
 // (libgmsh-dev) at build time there is no helper, and the HXT rows and the fibre surface are left out.
@@ -26,6 +28,7 @@
 // dihedral angle of each tetrahedron); --plot FIGURE writes them to FIGURE's name with .json and has
 // scripts/plot_mesh_quality.py draw every tool's histograms on one figure.
 
+#include <CGAL/Fast_Delaunay_triangulation_3/Surface_remeshing.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -199,6 +202,34 @@ Run run_ours(const Benchmark_surface& s, int threads, bool optimize)
   return run;
 }
 
+// The median of the surface sizes: the one constant given to Mesh_3, and the length ours-remeshed remeshes to.
+double median_surface_size(const Benchmark_surface& s)
+{
+  std::vector<double> h = surface_sizes(s);
+  std::nth_element(h.begin(), h.begin() + h.size() / 2, h.end());
+  return h[h.size() / 2];
+}
+
+// Ours on the surface remeshed to the median size; the remeshing counts as part of the recovery.
+Run run_ours_remeshed(const Benchmark_surface& s, int threads)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  CGAL::Fast_mesher_3::Surface_remeshing_options remeshing;
+  remeshing.target_edge_length = median_surface_size(s);
+  const CGAL::Fast_mesher_3::Surface_triangles surface =
+      CGAL::Fast_mesher_3::remesh_surfaces(s.points, s.triangles, remeshing);
+  const double remeshing_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Benchmark_surface remeshed = s;
+  remeshed.points = surface.points;
+  remeshed.triangles = surface.triangles;
+  Run run = run_ours(remeshed, threads, true);
+  run.recovery += remeshing_seconds;
+  run.total += remeshing_seconds;
+  run.surface_remeshed = true;
+  return run;
+}
+
 // Runs `work` with the process's standard output sent to a temporary file, and returns what was written there:
 // TetGen prints its phase times with printf.
 std::string captured_stdout(const std::function<void()>& work)
@@ -327,9 +358,7 @@ Run run_hxt(const Benchmark_surface& s, int threads, const std::string& optimisa
 
 Run run_cgal(const Benchmark_surface& s)
 {
-  std::vector<double> h = surface_sizes(s);
-  std::nth_element(h.begin(), h.begin() + h.size() / 2, h.end());
-  Cgal_mesh_3_run result = run_cgal_mesh_3(s, h[h.size() / 2]);
+  Cgal_mesh_3_run result = run_cgal_mesh_3(s, median_surface_size(s));
   Run run;
   run.refinement = result.refinement;
   run.improvement = result.improvement;
@@ -574,6 +603,7 @@ struct Options
   double maximum_size = std::numeric_limits<double>::infinity();
   std::string json_path; // empty: no data file
   std::string plot_path; // empty: no figure
+  std::vector<std::string> tools; // empty: every tool
 };
 
 std::vector<std::string> split(const std::string& list)
@@ -589,13 +619,17 @@ void print_usage(std::FILE* to)
 {
   std::fprintf(to,
                "usage: mesher_benchmark [--rounds N] [--surfaces A,B,...] [--data DIR] [--fibres N]\n"
-               "                        [--fibre-size H] [--max-size H] [--json FILE] [--plot FIGURE]\n"
+               "                        [--fibre-size H] [--max-size H] [--tools A,B,...] [--json FILE]\n"
+               "                        [--plot FIGURE]\n"
                "  --surfaces  names of CGAL data surfaces (NAME.off in --data) or paths; default\n"
                "              elephant,fandisk,anchor_dense (also extracted: bunny00, couplingdown,\n"
                "              refined_elephant, joint); 'none' for the fibres alone\n"
                "  --data      where CGAL's data meshes are (default: extracted from libcgal-demo by CMake)\n"
                "  --fibres    fibres in the cube (default 30; 0: no fibre surface), --fibre-size its surface size\n"
                "  --max-size  cap on h for the CGAL surfaces (default: none, h from the surface alone)\n"
+               "  --tools     the rows to run, by tool name (ours, ours-noopt, ours-remeshed, gmsh-hxt,\n"
+               "              gmsh-hxt+netgen, gmsh-hxt-noopt, tetgen-pq1.4, tetgen-pq1.4-O0, tetgen-pYq1.4,\n"
+               "              cgal-mesh-3); default: all\n"
                "  --json      write every row and its quality histograms (radius-edge ratio, smallest dihedral\n"
                "              angle per tetrahedron) to FILE\n"
                "  --plot      draw those histograms of every tool, one row of panels per surface, to FIGURE (.png,\n"
@@ -620,6 +654,7 @@ Options parse(int argc, char** argv)
     else if(a == "--fibres") o.fibres = std::stoi(value());
     else if(a == "--fibre-size") o.fibre_size = std::stod(value());
     else if(a == "--max-size") o.maximum_size = std::stod(value());
+    else if(a == "--tools") o.tools = split(value());
     else if(a == "--json") o.json_path = value();
     else if(a == "--plot") {
       o.plot_path = value();
@@ -666,6 +701,7 @@ std::vector<Tool> tools()
   t.push_back({"ours", 1, [](const Benchmark_surface& s) { return run_ours(s, 1, true); }});
   t.push_back({"ours", 2, [](const Benchmark_surface& s) { return run_ours(s, 2, true); }});
   t.push_back({"ours-noopt", 2, [](const Benchmark_surface& s) { return run_ours(s, 2, false); }});
+  t.push_back({"ours-remeshed", 2, [](const Benchmark_surface& s) { return run_ours_remeshed(s, 2); }});
   // HXT on 1 thread too, beside ours on 1 thread.
   if(!gmsh_helper().empty()) {
     t.push_back({"gmsh-hxt", 1, [](const Benchmark_surface& s) { return run_hxt(s, 1, "gmsh"); }});
@@ -691,7 +727,17 @@ int main(int argc, char** argv)
     print_header(date, options.rounds);
     const std::vector<Benchmark_surface> surfaces = load_surfaces(options);
     print_surfaces(surfaces);
-    const std::vector<Tool> all_tools = tools();
+    std::vector<Tool> all_tools = tools();
+    for(const std::string& name : options.tools)
+      if(std::none_of(all_tools.begin(), all_tools.end(), [&](const Tool& t) { return t.name == name; }))
+        throw std::invalid_argument("--tools: no tool named " + name + " (without Gmsh there are no gmsh-hxt rows)");
+    if(!options.tools.empty())
+      all_tools.erase(std::remove_if(all_tools.begin(), all_tools.end(),
+                                     [&](const Tool& t) {
+                                       return std::find(options.tools.begin(), options.tools.end(), t.name) ==
+                                              options.tools.end();
+                                     }),
+                      all_tools.end());
     std::vector<Row> rows;
     for(const Benchmark_surface& s : surfaces)
       for(const Tool& t : all_tools) rows.push_back(Row{&s, &t, {}, {}, {}, {}, 0, {}, false, ""});
