@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -136,6 +137,104 @@ TEST(SurfaceRemeshing, ASmoothSurfaceStaysOnItsTriangles)
   const std::vector<double> lengths = edge_lengths(remeshed);
   EXPECT_GT(lengths[lengths.size() / 2], 0.7 * options.target_edge_length);
   EXPECT_LT(lengths[lengths.size() / 2], 4.0 / 3 * options.target_edge_length);
+}
+
+// The unit cube's faces as n x n grids whose inner points are pushed along
+// a diagonal within their face, split along the other diagonal: triangles
+// with angles down to 12.8 degrees where other diagonals give 14.7.
+CGAL::Surface_mesh<CGAL::Epick::Point_3> skewed_cube(int n)
+{
+  typedef CGAL::Epick::Point_3 P;
+  CGAL::Surface_mesh<P> mesh;
+  std::map<std::array<long, 3>, CGAL::Surface_mesh<P>::Vertex_index> at;
+  auto vertex = [&](const std::array<double, 3>& p) {
+    const std::array<long, 3> key{std::lround(p[0] * 1e9), std::lround(p[1] * 1e9), std::lround(p[2] * 1e9)};
+    auto it = at.find(key);
+    if(it == at.end()) it = at.emplace(key, mesh.add_vertex(P(p[0], p[1], p[2]))).first;
+    return it->second;
+  };
+  const mesher_shapes::Surface cube = mesher_shapes::cube(0, 1);
+  for(std::size_t f = 0; f < cube.triangles.size(); f += 2) { // the quads (a, b, c, d), counter-clockwise
+    const std::array<std::size_t, 4> q{cube.triangles[f][0], cube.triangles[f][1], cube.triangles[f][2],
+                                       cube.triangles[f + 1][2]};
+    auto point = [&](int i, int j) {
+      double s = double(i) / n, t = double(j) / n;
+      if(i > 0 && i < n && j > 0 && j < n) { // inside the face: pushed towards the (s = t) diagonal
+        const double m = (s + t) / 2;
+        s = m + 0.15 * (s - m);
+        t = m + 0.15 * (t - m);
+      }
+      std::array<double, 3> p;
+      for(int k = 0; k < 3; ++k)
+        p[k] = (1 - s) * (1 - t) * cube.points[q[0]][k] + s * (1 - t) * cube.points[q[1]][k] +
+               s * t * cube.points[q[2]][k] + (1 - s) * t * cube.points[q[3]][k];
+      return vertex(p);
+    };
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j) {
+        const auto v00 = point(i, j), v10 = point(i + 1, j), v11 = point(i + 1, j + 1), v01 = point(i, j + 1);
+        mesh.add_face(v00, v10, v01);
+        mesh.add_face(v10, v11, v01);
+      }
+  }
+  return mesh;
+}
+
+TEST(SurfaceRemeshing, FlipsWidenTheSmallestAngleOfCoplanarTriangles)
+{
+  typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Mesh;
+  Mesh mesh = skewed_cube(6);
+  ASSERT_TRUE(mesh.is_valid() && CGAL::is_closed(mesh));
+  auto smallest_of_all = [](const Mesh& m) {
+    double smallest = CGAL_PI;
+    for(auto f : faces(m)) {
+      const auto h = halfedge(f, m);
+      smallest = std::min(smallest, remeshing_detail::smallest_angle(m.point(source(h, m)), m.point(target(h, m)),
+                                                                     m.point(target(next(h, m), m))));
+    }
+    return smallest;
+  };
+  auto volume = [](const Mesh& m) {
+    Surface_triangles s;
+    for(auto v : vertices(m)) s.points.push_back({m.point(v).x(), m.point(v).y(), m.point(v).z()});
+    for(auto f : faces(m)) {
+      std::array<std::size_t, 3> t;
+      int i = 0;
+      for(auto v : vertices_around_face(halfedge(f, m), m)) t[i++] = std::size_t(v);
+      s.triangles.push_back(t);
+    }
+    return mesher_shapes::enclosed_volume(as_shape(s));
+  };
+  const double before = smallest_of_all(mesh);
+  const auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+  remeshing_detail::flip_to_wider_angles(mesh, sharp);
+  ASSERT_TRUE(mesh.is_valid() && CGAL::is_closed(mesh));
+  EXPECT_LT(before * 180 / CGAL_PI, 13); // 12.8 degrees, 14.7 after the flips
+  EXPECT_GT(smallest_of_all(mesh), 1.1 * before);
+  EXPECT_NEAR(volume(mesh), 1.0, 1e-12); // flips within the faces: the cube unchanged
+  // No edge inside a face is left whose flip would widen its triangles.
+  std::size_t flippable = 0;
+  for(auto e : edges(mesh)) {
+    const auto h = halfedge(e, mesh), o = opposite(h, mesh);
+    const auto &a = mesh.point(source(h, mesh)), &b = mesh.point(target(h, mesh));
+    const auto &c = mesh.point(target(next(h, mesh), mesh)), &d = mesh.point(target(next(o, mesh), mesh));
+    if(CGAL::orientation(a, b, c, d) != CGAL::COPLANAR || degree(source(h, mesh), mesh) <= 3 ||
+       degree(target(h, mesh), mesh) <= 3)
+      continue;
+    // The other diagonal of a convex quadrilateral, not yet an edge: a flip
+    // the pass could have made.
+    const bool convex = CGAL::coplanar_orientation(a, b, c, d) == CGAL::NEGATIVE &&
+                        CGAL::coplanar_orientation(c, d, a, b) == CGAL::NEGATIVE;
+    bool joined = false;
+    for(auto around : halfedges_around_target(target(next(h, mesh), mesh), mesh))
+      joined = joined || source(around, mesh) == target(next(o, mesh), mesh);
+    if(!convex || joined) continue;
+    ++flippable;
+    const double now = std::min(remeshing_detail::smallest_angle(a, b, c), remeshing_detail::smallest_angle(b, a, d));
+    const double after = std::min(remeshing_detail::smallest_angle(a, d, c), remeshing_detail::smallest_angle(b, c, d));
+    EXPECT_LE(after, now * (1 + 1e-6));
+  }
+  EXPECT_GT(flippable, 100u); // the check above looked at the edges inside the faces
 }
 
 TEST(SurfaceRemeshing, BadOptionsAndSurfacesAreRefused)
