@@ -874,8 +874,8 @@ one's H); a malformed line raises ValueError naming it.  optimize: improve
 the tetrahedra under gamma 0.3 or with a dihedral angle under
 min_dihedral_target degrees (0: gamma alone; out of [0, 70] raises
 ValueError).  remesh_surface: an edge length to remesh the surfaces to
-first (CGAL's isotropic remeshing, each surface alone, edges sharper than
-60 degrees kept as polylines); the boundary is then not the given
+first (CGAL's isotropic remeshing, each surface alone; edges where the
+normals differ by over 60 degrees kept as polylines); the boundary is then not the given
 triangles, and where the surface is coarser than the size this removes the
 flat tetrahedra its large triangles force.  A surface that is not closed, oriented,
 manifold and free of self-intersections raises ValueError naming the

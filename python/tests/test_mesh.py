@@ -78,7 +78,7 @@ def test_a_remeshed_surface_gives_good_tetrahedra_where_its_large_triangles_did_
     volumes = signed_volumes(points, tets)
     assert (volumes > 0).all() and volumes.sum() == pytest.approx(1.0, rel=1e-9)
     assert ((points >= -1e-12) & (points <= 1 + 1e-12)).all()
-    # The twelve triangles, 1.4 times the size across, force flat tetrahedra along them; remeshed, none.
+    # The twelve triangles (circumradius 0.71, 7 times the size) force flat tetrahedra along them; remeshed, none.
     assert (gamma(*as_given[:2]) < 0.3).sum() > 0
     assert (gamma(points, tets) < 0.3).sum() == 0
     for bad in (0, -1, float("nan"), float("inf")):

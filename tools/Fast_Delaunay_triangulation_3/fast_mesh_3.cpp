@@ -49,9 +49,9 @@ int usage(const char* program)
             << "  --quality-threshold G  gamma = 3 r_in / r_circ to reach, in (0, 1) (default 0.3)\n"
             << "  --dihedral-target D    smallest dihedral angle to reach, degrees in [0, 70] (default 15;\n"
             << "                         0: gamma alone)\n"
-            << "  --remesh-surface L     remesh the surfaces to edge length L first (sharp edges, over 60\n"
-            << "                         degrees, kept as polylines): the boundary is then not the input's\n"
-            << "                         triangles, and h follows L where no smaller size is given\n"
+            << "  --remesh-surface L     remesh the surfaces to edge length L first (edges where the normals\n"
+            << "                         differ by over 60 degrees kept as polylines): the boundary is then\n"
+            << "                         not the input's triangles, and h follows L where no smaller size is given\n"
             << "  --quiet      print nothing but errors\n";
   return 2;
 }
