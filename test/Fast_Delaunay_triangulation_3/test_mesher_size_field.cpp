@@ -126,12 +126,15 @@ TEST(SizeField, FunctionRefinesWhereItIsBelowTheSurfaceSize)
     SCOPED_TRACE("threads " + std::to_string(threads));
     Mesher_options plain_options;
     plain_options.threads = threads;
+    // The torus's triangles are over 0.05: the improvement would work in
+    // vain on the flat tetrahedra along them (and take most of the time).
+    plain_options.optimize = false;
     Mesher_options fine = plain_options;
-    fine.size_function = [](double x, double, double) { return x > 0 ? 0.04 : 1e3; };
+    fine.size_function = [](double x, double, double) { return x > 0 ? 0.05 : 1e3; };
     const Tetrahedral_mesh plain = mesh_surfaces(s.points, s.triangles, plain_options);
     const Tetrahedral_mesh mesh = mesh_surfaces(s.points, s.triangles, fine);
     const auto n_plain = tetrahedra_by_side(plain), n = tetrahedra_by_side(mesh);
-    EXPECT_GT(n[0], 3 * n_plain[0]); // the half where h is 0.04
+    EXPECT_GT(n[0], 3 * n_plain[0]); // the half where h is 0.05
     // The other half: refined only in the band near x = 0, where the
     // sizes blend.
     EXPECT_LT(n[1], 2 * n_plain[1]);
@@ -139,7 +142,7 @@ TEST(SizeField, FunctionRefinesWhereItIsBelowTheSurfaceSize)
     // Every point's size is the function's where it is smaller.
     for(std::size_t v = 0; v < mesh.points.size(); ++v) {
       if(mesh.points[v][0] > 0) {
-        EXPECT_LE(mesh.size[v], 0.04 * (1 + 1e-12)) << v;
+        EXPECT_LE(mesh.size[v], 0.05 * (1 + 1e-12)) << v;
       }
     }
     mesher_checks::expect_all_positive(mesh);
