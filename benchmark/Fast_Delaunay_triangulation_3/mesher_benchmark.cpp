@@ -19,7 +19,8 @@
 // default optimisation, Mesh_3 with perturb_mesh_3 and exude_mesh_3.  One row of each without it (ours with
 // optimize off, HXT with Mesh.Optimize = 0, TetGen -O0) shows what the step costs and gains.  Mesh_3 samples the
 // surface anew; the row ours-remeshed does the same for ours (Surface_remeshing.h: CGAL's isotropic remeshing to
-// Mesh_3's constant, sharp edges kept), so that its quality is compared with Mesh_3's on equal terms.
+// Mesh_3's constant, sharp edges kept, shorter where walls thinner than it leave flat tetrahedra), so that its
+// quality is compared with Mesh_3's on equal terms.
 
 // Gmsh runs in a helper process, mesher_benchmark_gmsh (mesher_benchmark_io.h says why); without Gmsh
 // (libgmsh-dev) at build time there is no helper, and the HXT rows and the fibre surface are left out.
@@ -185,21 +186,33 @@ std::vector<double> surface_sizes(const Benchmark_surface& s)
   return h;
 }
 
-Run run_ours(const Benchmark_surface& s, int threads, bool optimize)
+CGAL::Fast_mesher_3::Mesher_options ours_options(const Benchmark_surface& s, int threads, bool optimize)
 {
   CGAL::Fast_mesher_3::Mesher_options options;
   options.threads = threads;
   options.optimize = optimize;
   options.maximum_size = s.maximum_size;
-  CGAL::Fast_mesher_3::Mesher_statistics stats;
+  return options;
+}
+
+// Algorithm 2's lines 2-3 are the recovery; colouring and sizes belong with the refinement they prepare.
+Run ours_run(CGAL::Fast_mesher_3::Tetrahedral_mesh mesh, const CGAL::Fast_mesher_3::Mesher_statistics& stats)
+{
   Run run;
-  run.mesh = CGAL::Fast_mesher_3::mesh_surfaces(s.points, s.triangles, options, &stats);
-  // Algorithm 2's lines 2-3 are the recovery; colouring and sizes belong with the refinement they prepare.
+  run.mesh = std::move(mesh);
   run.recovery = stats.empty_mesh_seconds + stats.recovery_seconds;
   run.refinement = stats.colouring_seconds + stats.refinement_seconds;
   run.improvement = stats.improvement_seconds;
   run.total = stats.total_seconds;
   return run;
+}
+
+Run run_ours(const Benchmark_surface& s, int threads, bool optimize)
+{
+  CGAL::Fast_mesher_3::Mesher_statistics stats;
+  CGAL::Fast_mesher_3::Tetrahedral_mesh mesh =
+      CGAL::Fast_mesher_3::mesh_surfaces(s.points, s.triangles, ours_options(s, threads, optimize), &stats);
+  return ours_run(std::move(mesh), stats);
 }
 
 // The median of the surface sizes: the one constant given to Mesh_3, and the length ours-remeshed remeshes to.
@@ -210,26 +223,17 @@ double median_surface_size(const Benchmark_surface& s)
   return h[h.size() / 2];
 }
 
-// Ours on the surface remeshed to the median size; the remeshing counts as part of the recovery.
+// Ours on the surface remeshed to the median size, shorter where the mesh asks for it
+// (mesh_remeshed_surfaces); the remeshings and the attempts not kept count as part of the recovery.
 Run run_ours_remeshed(const Benchmark_surface& s, int threads)
 {
-  const auto t0 = std::chrono::steady_clock::now();
   CGAL::Fast_mesher_3::Surface_remeshing_options remeshing;
   remeshing.target_edge_length = median_surface_size(s);
-  const CGAL::Fast_mesher_3::Surface_triangles surface =
-      CGAL::Fast_mesher_3::remesh_surfaces(s.points, s.triangles, remeshing);
-  const double remeshing_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  // Only what run_ours reads: the input's components and volumes do not
-  // describe the remeshed triangles.
-  Benchmark_surface remeshed;
-  remeshed.name = s.name;
-  remeshed.maximum_size = s.maximum_size;
-  remeshed.points = surface.points;
-  remeshed.triangles = surface.triangles;
-  Run run = run_ours(remeshed, threads, true);
-  run.recovery += remeshing_seconds;
-  run.total += remeshing_seconds;
+  CGAL::Fast_mesher_3::Mesher_statistics stats;
+  CGAL::Fast_mesher_3::Tetrahedral_mesh mesh = CGAL::Fast_mesher_3::mesh_remeshed_surfaces(
+      s.points, s.triangles, remeshing, ours_options(s, threads, true), &stats);
+  Run run = ours_run(std::move(mesh), stats);
+  run.recovery += stats.remeshing_seconds + stats.discarded_meshing_seconds;
   run.surface_remeshed = true;
   return run;
 }
@@ -437,12 +441,17 @@ std::string utc_now()
   return date;
 }
 
-std::string machine()
+// The cores this process may run on; -1 if unknown.
+int usable_cores()
 {
   cpu_set_t set;
-  const int usable = ::sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : -1;
+  return ::sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : -1;
+}
+
+std::string machine()
+{
   return cpu_model() + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads, " +
-         std::to_string(usable) + " usable";
+         std::to_string(usable_cores()) + " usable";
 }
 
 void print_header(const std::string& date, int rounds)
@@ -768,8 +777,11 @@ int main(int argc, char** argv)
                      row.tool->name.c_str(), row.tool->threads);
       }
     print_table(rows);
-    std::printf("load average %.2f at the end (above the usable cores: other work competed with the tools)\n",
-                load_average());
+    const double load_at_end = load_average();
+    std::printf("load average %.2f at the end%s\n", load_at_end,
+                usable_cores() > 0 && load_at_end > usable_cores()
+                    ? " (above the usable cores: other work competed with the tools)"
+                    : "");
     std::filesystem::remove_all(scratch_directory());
     if(!options.json_path.empty()) write_json(options.json_path, date, options.rounds, rows);
     if(!options.plot_path.empty()) {

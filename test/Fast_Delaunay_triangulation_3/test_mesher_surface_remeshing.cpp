@@ -5,8 +5,9 @@
 // the result lies on the input, keeps its sharp edges and corners and the
 // volume it encloses, each surface apart; meshed at that length it has no
 // triangle over the size and no tetrahedron under gamma 0.3, where the
-// input's own large triangles left some.  Bad options and bad surfaces are
-// refused with the reason.
+// input's own large triangles left some; meshed through
+// mesh_remeshed_surfaces, a wall thinner than the length shortens it.  Bad
+// options and bad surfaces are refused with the reason.
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -149,7 +150,7 @@ TEST(SurfaceRemeshing, SurfacesRemeshedIntoEachOtherAreRefused)
   // Spheres 0.01 apart, remeshed to 0.3: the outer one's chords cut 0.011
   // into it, through the inner one.
   const mesher_shapes::Surface s = mesher_shapes::combine(mesher_shapes::icosphere(3, 1), mesher_shapes::icosphere(3, 0.99));
-  remesh_surfaces(s.points, s.triangles, {0.06}); // chords cutting 0.0005 deep: accepted
+  remesh_surfaces(s.points, s.triangles, {0.12}); // chords cutting 0.002 deep: accepted
   try {
     remesh_surfaces(s.points, s.triangles, {0.3});
     ADD_FAILURE() << "accepted";
@@ -275,6 +276,52 @@ TEST(SurfaceRemeshing, FlipsWidenTheSmallestAngleOfCoplanarTriangles)
   EXPECT_GT(flippable, 80u); // the check above looked at the edges inside those faces
 }
 
+double tetrahedra_volume(const Tetrahedral_mesh& mesh)
+{
+  double volume = 0;
+  for(const auto& t : mesh.tetrahedra) {
+    const auto &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]], &d = mesh.points[t[3]];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]},
+                 w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+    volume += (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+               u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+  }
+  return volume;
+}
+
+// A plate 0.05 thick remeshed to 0.1: a triangle on one face lies over
+// vertices of the other, closer than it is wide, and the tetrahedra
+// between them have their four vertices on the surface: no interior point
+// mends them.  Meshing the remeshed plate shortens the length until the
+// mesh has none; with no shortening allowed they stay.
+TEST(SurfaceRemeshing, MeshingShortensTheLengthWhereAWallIsThinnerThanIt)
+{
+  mesher_shapes::Surface plate = mesher_shapes::cube(0, 1);
+  for(auto& p : plate.points) p[2] *= 0.05;
+  Surface_remeshing_options once;
+  once.target_edge_length = 0.1;
+  once.shortenings = 0;
+  Mesher_statistics first;
+  mesh_remeshed_surfaces(plate.points, plate.triangles, once, Mesher_options(), &first);
+  EXPECT_EQ(first.remeshing_attempts, 1);
+  EXPECT_EQ(first.remeshed_edge_length, 0.1);
+  EXPECT_EQ(first.discarded_meshing_seconds, 0);
+  EXPECT_GT(first.improvement.bad_after_on_surface_not_forced, 0u);
+
+  Mesher_statistics shortened;
+  const Tetrahedral_mesh mesh =
+      mesh_remeshed_surfaces(plate.points, plate.triangles, {0.1}, Mesher_options(), &shortened);
+  EXPECT_GT(shortened.remeshing_attempts, 1);
+  EXPECT_LE(shortened.remeshing_attempts, 4);
+  EXPECT_LT(shortened.remeshed_edge_length, 0.1);
+  EXPECT_EQ(shortened.improvement.bad_after_on_surface_not_forced, 0u);
+  EXPECT_LT(shortened.improvement.bad_after, first.improvement.bad_after);
+  EXPECT_EQ(shortened.remeshed_triangles, mesh.triangles.size());
+  EXPECT_GT(shortened.remeshed_triangles, first.remeshed_triangles);
+  EXPECT_GE(shortened.total_seconds, shortened.remeshing_seconds + shortened.discarded_meshing_seconds);
+  EXPECT_NEAR(tetrahedra_volume(mesh), 0.05, 1e-12);
+}
+
 TEST(SurfaceRemeshing, BadOptionsAndSurfacesAreRefused)
 {
   const mesher_shapes::Surface cube = mesher_shapes::cube(0, 1);
@@ -297,9 +344,15 @@ TEST(SurfaceRemeshing, BadOptionsAndSurfacesAreRefused)
   options.iterations = 0;
   EXPECT_NE(message_of(options, cube).find("iterations"), std::string::npos);
 
+  EXPECT_THROW(mesh_remeshed_surfaces(cube.points, cube.triangles, {0.0}), std::invalid_argument);
+  Mesher_options bad_target;
+  bad_target.quality_threshold = 2;
+  EXPECT_THROW(mesh_remeshed_surfaces(cube.points, cube.triangles, {0.1}, bad_target), std::invalid_argument);
+
   mesher_shapes::Surface open = cube;
   open.triangles.pop_back();
   EXPECT_THROW(remesh_surfaces(open.points, open.triangles, {0.1}), Invalid_surface);
+  EXPECT_THROW(mesh_remeshed_surfaces(open.points, open.triangles, {0.1}), Invalid_surface);
   try {
     remesh_surface_files({"no such file.off"}, {0.1});
     ADD_FAILURE() << "a missing file accepted";

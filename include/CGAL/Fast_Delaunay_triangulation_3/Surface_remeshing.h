@@ -7,13 +7,16 @@
 // triangles, forces flat tetrahedra that no improvement can mend
 // (Mesher_statistics::triangles_over_size counts such triangles).  A user
 // who may change the boundary's triangles, as CGAL's Mesh_3 always does,
-// remeshes it first:
+// remeshes it first, and meshes the result:
 //
 //   #include <CGAL/Fast_Delaunay_triangulation_3/Surface_remeshing.h>
-//   CGAL::Fast_mesher_3::Surface_triangles surface =
-//       CGAL::Fast_mesher_3::remesh_surface_files({"part.off"}, {0.02});
 //   CGAL::Fast_mesher_3::Tetrahedral_mesh mesh =
-//       CGAL::Fast_mesher_3::mesh_surfaces(surface.points, surface.triangles, options);
+//       CGAL::Fast_mesher_3::mesh_remeshed_surface_files({"part.off"}, {0.02}, options);
+//
+// (remesh_surface_files alone returns the remeshed triangles).  Where a
+// wall or a step is thinner than the length, the triangles on one side lie
+// over the vertices of the other and the tetrahedra between them are flat;
+// mesh_remeshed_surfaces sees them in the mesh and remeshes shorter.
 //
 // The remeshing is CGAL's isotropic_remeshing (Polygon_mesh_processing),
 // run on each closed surface alone (a vertex is projected onto its own
@@ -34,10 +37,12 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/internal/mesher/Surface_input.h>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -59,6 +64,13 @@ struct Surface_remeshing_options
   double sharp_edge_angle = 60;
   // Rounds of split, collapse, flip, smoothing and projection.
   unsigned int iterations = 3;
+  // mesh_remeshed_surfaces: times the surfaces are remeshed again, each
+  // time 10% shorter, while the mesh keeps bad tetrahedra whose four
+  // vertices are on the surface and that no triangle's shape forces (a
+  // wall or a step narrower than the triangles; the improvement counts
+  // them, so with Mesher_options::optimize off there is one attempt); the
+  // attempt with the fewest is kept.  0: one attempt.
+  unsigned int shortenings = 3;
 };
 
 // Closed surfaces as points and triangles (indices into points), outward.
@@ -159,8 +171,10 @@ void flip_to_wider_angles(Mesh& mesh, const Sharp_edges& sharp)
 }
 
 // A checked soup (Surface_input.h: closed, oriented outward, manifold, not
-// intersecting), each of its surfaces remeshed alone.
-inline Surface_triangles remeshed(const Surface_soup& soup, const Surface_remeshing_options& options)
+// intersecting), each of its surfaces remeshed alone; `checked` receives
+// the output as the mesher reads it.
+inline Surface_triangles remeshed(const Surface_soup& soup, const Surface_remeshing_options& options,
+                                  Surface_soup& checked)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -246,7 +260,7 @@ inline Surface_triangles remeshed(const Surface_soup& soup, const Surface_remesh
   // sides of a thin wall, into contact, and a cap may be left flat: the
   // mesher would refuse that, so this does first, saying why.
   try {
-    Fast_Delaunay_triangulation_3_internal::mesher::surfaces_from_triangles(out.points, out.triangles);
+    checked = Fast_Delaunay_triangulation_3_internal::mesher::surfaces_from_triangles(out.points, out.triangles);
   } catch(const std::invalid_argument& e) {
     std::string defect = e.what();
     const std::string mesher_prefix = "Tetrahedral_mesher: ";
@@ -258,6 +272,80 @@ inline Surface_triangles remeshed(const Surface_soup& soup, const Surface_remesh
     throw Fast_Delaunay_triangulation_3_internal::mesher::Invalid_surface(message.str());
   }
   return out;
+}
+
+inline Surface_triangles remeshed(const Surface_soup& soup, const Surface_remeshing_options& options)
+{
+  Surface_soup checked;
+  return remeshed(soup, options, checked);
+}
+
+// Remeshes what read_soup reads and meshes it, shortening the length as
+// Surface_remeshing_options::shortenings says.  A wall or a step narrower
+// than the triangles leaves tetrahedra with four vertices on the surface
+// that no interior point can mend: on CGAL's couplingdown remeshed to
+// 0.048 a triangle 0.048 wide lies 0.0094 over the foot of a step, and the
+// smallest dihedral angle stays at 8.3 degrees; 0.9 and 0.81 times that
+// length leave such tetrahedra too, 0.73 times none (15.0 degrees).
+// Which length works is not monotone (0.04 works there, 0.042 does not):
+// each attempt is meshed and judged by the mesh itself.
+template <class Read_soup>
+Tetrahedral_mesh mesh_remeshed(Read_soup read_soup, const Surface_remeshing_options& remeshing,
+                               const Mesher_options& options, Mesher_statistics* statistics)
+{
+  check_options(remeshing);
+  if(options.optimize) mesher_detail::improvement_options_of(options, "Tetrahedral_mesher"); // before any work
+  auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  auto t0 = std::chrono::steady_clock::now();
+  const Surface_soup soup = read_soup();
+  double remeshing_seconds = seconds_since(t0), discarded_seconds = 0;
+  Tetrahedral_mesh kept;
+  Mesher_statistics kept_stats;
+  std::size_t kept_left = 0;
+  double length = remeshing.target_edge_length;
+  int attempts = 0;
+  for(unsigned int attempt = 0; attempt <= remeshing.shortenings; ++attempt, length *= 0.9) {
+    Surface_remeshing_options shorter = remeshing;
+    shorter.target_edge_length = length;
+    t0 = std::chrono::steady_clock::now();
+    Surface_soup checked;
+    Surface_triangles surface;
+    try {
+      surface = remeshed(soup, shorter, checked);
+    } catch(const Fast_Delaunay_triangulation_3_internal::mesher::Invalid_surface&) {
+      // A shorter length whose surface the mesher would refuse (it meets
+      // another surface) ends the shortening with what was kept.
+      if(attempt == 0) throw;
+      remeshing_seconds += seconds_since(t0);
+      break;
+    }
+    remeshing_seconds += seconds_since(t0);
+    ++attempts;
+    Mesher_statistics stats;
+    Tetrahedral_mesh mesh = mesher_detail::read_and_mesh([&] { return std::move(checked); }, options, &stats,
+                                                         [](const auto&, const auto&) {});
+    const std::size_t left = stats.improvement.bad_after_on_surface_not_forced;
+    if(attempt == 0 || left < kept_left) {
+      if(attempt > 0) discarded_seconds += kept_stats.input_seconds + kept_stats.total_seconds;
+      kept = std::move(mesh);
+      kept_stats = stats;
+      kept_stats.remeshed_edge_length = length;
+      kept_stats.remeshed_triangles = surface.triangles.size();
+      kept_left = left;
+    } else {
+      discarded_seconds += stats.input_seconds + stats.total_seconds;
+    }
+    // Without the improvement the bad tetrahedra are not counted.
+    if(left == 0 || !options.optimize) break;
+  }
+  kept_stats.remeshing_seconds = remeshing_seconds;
+  kept_stats.remeshing_attempts = attempts;
+  kept_stats.discarded_meshing_seconds = discarded_seconds;
+  kept_stats.total_seconds += remeshing_seconds + discarded_seconds;
+  if(statistics) *statistics = kept_stats;
+  return kept;
 }
 
 } // namespace remeshing_detail
@@ -281,6 +369,32 @@ inline Surface_triangles remesh_surface_files(const std::vector<std::string>& pa
 {
   remeshing_detail::check_options(options);
   return remeshing_detail::remeshed(Fast_Delaunay_triangulation_3_internal::mesher::read_surfaces(paths), options);
+}
+
+// Remeshes the surfaces (as remesh_surfaces) and meshes them (as
+// mesh_surfaces), remeshing shorter where the mesh asks for it
+// (Surface_remeshing_options::shortenings).  `statistics` gets the kept
+// attempt's figures and the remeshing's.  Throws what both functions throw.
+inline Tetrahedral_mesh mesh_remeshed_surfaces(const std::vector<std::array<double, 3>>& points,
+                                               const std::vector<std::array<std::size_t, 3>>& triangles,
+                                               const Surface_remeshing_options& remeshing,
+                                               const Mesher_options& options = Mesher_options(),
+                                               Mesher_statistics* statistics = nullptr)
+{
+  return remeshing_detail::mesh_remeshed(
+      [&] { return Fast_Delaunay_triangulation_3_internal::mesher::surfaces_from_triangles(points, triangles); },
+      remeshing, options, statistics);
+}
+
+// The same for surface files, read as mesh_surface_files reads them.
+inline Tetrahedral_mesh mesh_remeshed_surface_files(const std::vector<std::string>& paths,
+                                                    const Surface_remeshing_options& remeshing,
+                                                    const Mesher_options& options = Mesher_options(),
+                                                    Mesher_statistics* statistics = nullptr)
+{
+  return remeshing_detail::mesh_remeshed(
+      [&] { return Fast_Delaunay_triangulation_3_internal::mesher::read_surfaces(paths); }, remeshing, options,
+      statistics);
 }
 
 } // namespace Fast_mesher_3

@@ -143,6 +143,13 @@ struct Mesher_statistics
   std::size_t partitioned_attempts = 0;
   // What the improvement did; all zero when options.optimize is off.
   Fast_Delaunay_triangulation_3_internal::mesher::Improvement_statistics improvement;
+  // mesh_remeshed_surfaces (Surface_remeshing.h); all zero otherwise: the
+  // remeshings' seconds, their number, the edge length and triangles of
+  // the one kept, and the seconds spent meshing the others (total_seconds
+  // counts both).
+  double remeshing_seconds = 0, discarded_meshing_seconds = 0, remeshed_edge_length = 0;
+  int remeshing_attempts = 0;
+  std::size_t remeshed_triangles = 0;
 };
 
 namespace mesher_detail {

@@ -110,6 +110,12 @@ struct Improvement_statistics
   // The constrained facets are the input triangles (mesh_surfaces), or
   // every facet improve_mesh keeps: the boundary and the interfaces.
   std::size_t bad_after_forced_by_surface = 0;
+  // Of the bad tetrahedra left, those whose four vertices are on the
+  // surface and that stand on no such facet: triangles wider than the
+  // material under them (a wall or a step narrower than they are) leave
+  // these, and a finer surface mends them (mesh_remeshed_surfaces,
+  // Surface_remeshing.h, shortens its length while there are some).
+  std::size_t bad_after_on_surface_not_forced = 0;
   std::size_t edge_removals = 0, face_removals = 0, relocations = 0;
   std::size_t steiner_points = 0; // interior vertices added by edge or facet splits or in a cavity
   std::size_t deferred = 0; // operations that met another partition and were retried
@@ -175,9 +181,11 @@ public:
     for(const Bad_tet& b : bad) {
       if(gamma_of(b.t) >= options_.quality_threshold) continue;
       const Vertex_id* tv = cm_.mesh.vertex_ids(b.t);
-      stats.bad_after_on_surface +=
-          on_surface_[tv[0]] && on_surface_[tv[1]] && on_surface_[tv[2]] && on_surface_[tv[3]] ? 1 : 0;
-      stats.bad_after_forced_by_surface += on_forcing_input_triangle(b.t) ? 1 : 0;
+      const bool on_surface = on_surface_[tv[0]] && on_surface_[tv[1]] && on_surface_[tv[2]] && on_surface_[tv[3]];
+      const bool forced = on_forcing_input_triangle(b.t);
+      stats.bad_after_on_surface += on_surface ? 1 : 0;
+      stats.bad_after_forced_by_surface += forced ? 1 : 0;
+      stats.bad_after_on_surface_not_forced += on_surface && !forced ? 1 : 0;
     }
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return stats;
