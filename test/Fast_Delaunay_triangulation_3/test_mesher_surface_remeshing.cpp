@@ -17,11 +17,13 @@
 
 #include <gtest/gtest.h>
 
+#include "mesher_checks.h"
 #include "mesher_shapes.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -276,50 +278,57 @@ TEST(SurfaceRemeshing, FlipsWidenTheSmallestAngleOfCoplanarTriangles)
   EXPECT_GT(flippable, 80u); // the check above looked at the edges inside those faces
 }
 
-double tetrahedra_volume(const Tetrahedral_mesh& mesh)
+mesher_shapes::Surface plate(double thickness)
 {
-  double volume = 0;
-  for(const auto& t : mesh.tetrahedra) {
-    const auto &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]], &d = mesh.points[t[3]];
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]},
-                 w[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-    volume += (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-               u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
-  }
-  return volume;
+  mesher_shapes::Surface plate = mesher_shapes::cube(0, 1);
+  for(auto& p : plate.points) p[2] *= thickness;
+  return plate;
 }
 
 // A plate 0.05 thick remeshed to 0.1: a triangle on one face lies over
 // vertices of the other, closer than it is wide, and the tetrahedra
 // between them have their four vertices on the surface: no interior point
 // mends them.  Meshing the remeshed plate shortens the length until the
-// mesh has none; with no shortening allowed they stay.
+// mesh has none; with no shortening allowed, or no improvement to count
+// them, they stay.
 TEST(SurfaceRemeshing, MeshingShortensTheLengthWhereAWallIsThinnerThanIt)
 {
-  mesher_shapes::Surface plate = mesher_shapes::cube(0, 1);
-  for(auto& p : plate.points) p[2] *= 0.05;
+  const mesher_shapes::Surface thin = plate(0.05);
   Surface_remeshing_options once;
   once.target_edge_length = 0.1;
   once.shortenings = 0;
   Mesher_statistics first;
-  mesh_remeshed_surfaces(plate.points, plate.triangles, once, Mesher_options(), &first);
-  EXPECT_EQ(first.remeshing_attempts, 1);
+  mesh_remeshed_surfaces(thin.points, thin.triangles, once, Mesher_options(), &first);
+  EXPECT_EQ(first.remeshing_attempts, 1u);
   EXPECT_EQ(first.remeshed_edge_length, 0.1);
   EXPECT_EQ(first.discarded_meshing_seconds, 0);
   EXPECT_GT(first.improvement.bad_after_on_surface_not_forced, 0u);
 
+  Mesher_options unoptimized;
+  unoptimized.optimize = false;
+  Mesher_statistics plain;
+  mesh_remeshed_surfaces(thin.points, thin.triangles, {0.1}, unoptimized, &plain);
+  EXPECT_EQ(plain.remeshing_attempts, 1u);
+
+  // Through a file as through memory: the same mesh.
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "fdt3_surface_remeshing_plate.off").string();
+  mesher_shapes::write_off(path, thin);
   Mesher_statistics shortened;
-  const Tetrahedral_mesh mesh =
-      mesh_remeshed_surfaces(plate.points, plate.triangles, {0.1}, Mesher_options(), &shortened);
-  EXPECT_GT(shortened.remeshing_attempts, 1);
-  EXPECT_LE(shortened.remeshing_attempts, 4);
-  EXPECT_LT(shortened.remeshed_edge_length, 0.1);
+  const Tetrahedral_mesh mesh = mesh_remeshed_surface_files({path}, {0.1}, Mesher_options(), &shortened);
+  std::filesystem::remove(path);
+  EXPECT_GT(shortened.remeshing_attempts, 1u);
   EXPECT_EQ(shortened.improvement.bad_after_on_surface_not_forced, 0u);
+  // None left: the last attempt is the one kept.
+  EXPECT_DOUBLE_EQ(shortened.remeshed_edge_length, 0.1 * std::pow(0.9, shortened.remeshing_attempts - 1));
   EXPECT_LT(shortened.improvement.bad_after, first.improvement.bad_after);
   EXPECT_EQ(shortened.remeshed_triangles, mesh.triangles.size());
   EXPECT_GT(shortened.remeshed_triangles, first.remeshed_triangles);
-  EXPECT_GE(shortened.total_seconds, shortened.remeshing_seconds + shortened.discarded_meshing_seconds);
-  EXPECT_NEAR(tetrahedra_volume(mesh), 0.05, 1e-12);
+  mesher_checks::expect_all_positive(mesh);
+  EXPECT_NEAR(mesher_checks::volume_of_subdomain(mesh, 1), 0.05, 1e-12);
+  const Tetrahedral_mesh in_memory = mesh_remeshed_surfaces(thin.points, thin.triangles, {0.1});
+  EXPECT_EQ(in_memory.points, mesh.points);
+  EXPECT_EQ(in_memory.tetrahedra, mesh.tetrahedra);
 }
 
 TEST(SurfaceRemeshing, BadOptionsAndSurfacesAreRefused)
@@ -344,10 +353,26 @@ TEST(SurfaceRemeshing, BadOptionsAndSurfacesAreRefused)
   options.iterations = 0;
   EXPECT_NE(message_of(options, cube).find("iterations"), std::string::npos);
 
-  EXPECT_THROW(mesh_remeshed_surfaces(cube.points, cube.triangles, {0.0}), std::invalid_argument);
+  options.iterations = 3;
+  options.shortenings = 21;
+  EXPECT_NE(message_of(options, cube).find("shortenings"), std::string::npos);
+  auto meshing_message_of = [&](auto&& mesh_it) -> std::string {
+    try {
+      mesh_it();
+    } catch(const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  EXPECT_NE(meshing_message_of([&] { mesh_remeshed_surfaces(cube.points, cube.triangles, {0.0}); })
+                .find("target_edge_length must be positive"),
+            std::string::npos);
+  // Refused before the file is read: the targets are checked first.
   Mesher_options bad_target;
   bad_target.quality_threshold = 2;
-  EXPECT_THROW(mesh_remeshed_surfaces(cube.points, cube.triangles, {0.1}, bad_target), std::invalid_argument);
+  EXPECT_NE(meshing_message_of([&] { mesh_remeshed_surface_files({"no such file.off"}, {0.1}, bad_target); })
+                .find("quality_threshold"),
+            std::string::npos);
 
   mesher_shapes::Surface open = cube;
   open.triangles.pop_back();

@@ -54,6 +54,7 @@ int usage(const char* program)
             << "                         not the input's triangles, and h follows L where no smaller size is given;\n"
             << "                         remeshed up to 3 times 10% shorter while walls narrower than the\n"
             << "                         triangles leave bad tetrahedra with four vertices on the surface\n"
+            << "                         (with --optimize 1, which counts them)\n"
             << "  --quiet      print nothing but errors\n";
   return 2;
 }
@@ -141,16 +142,15 @@ int main(int argc, char** argv)
     CGAL::Fast_mesher_3::write_mesh(output, mesh);
     bar.finish();
     if(!quiet) {
-      if(remeshing.target_edge_length > 0)
-        std::cout << "surface remeshing       " << stats.remeshing_seconds << " s (read, checked, remeshed to "
-                  << stats.remeshed_triangles << " triangles of edge length about " << stats.remeshed_edge_length
-                  << (stats.remeshing_attempts == 1
-                          ? std::string()
-                          : "; " + std::to_string(stats.remeshing_attempts) +
-                                " attempts, each 10% shorter while bad tetrahedra with four vertices on the "
-                                "surface remained, " +
-                                std::to_string(stats.discarded_meshing_seconds) + " s meshing those not kept")
-                  << ")\n";
+      if(remeshing.target_edge_length > 0) {
+        std::cout << "surface remeshing       " << stats.remeshing_seconds << " s (remeshed to "
+                  << stats.remeshed_triangles << " triangles of edge length about " << stats.remeshed_edge_length;
+        if(stats.remeshing_attempts > 1)
+          std::cout << "; " << stats.remeshing_attempts
+                    << " attempts, each 10% shorter while bad tetrahedra with four vertices on the surface remained, "
+                    << stats.discarded_meshing_seconds << " s meshing those not kept";
+        std::cout << ")\n";
+      }
       std::cout << "input (read and check)  " << stats.input_seconds << " s\n"
                 << "empty mesh              " << stats.empty_mesh_seconds << " s\n"
                 << "boundary recovery       " << stats.recovery_seconds << " s ("

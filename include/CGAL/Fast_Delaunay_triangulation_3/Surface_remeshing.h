@@ -43,6 +43,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <exception>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -64,12 +65,14 @@ struct Surface_remeshing_options
   double sharp_edge_angle = 60;
   // Rounds of split, collapse, flip, smoothing and projection.
   unsigned int iterations = 3;
-  // mesh_remeshed_surfaces: times the surfaces are remeshed again, each
-  // time 10% shorter, while the mesh keeps bad tetrahedra whose four
-  // vertices are on the surface and that no triangle's shape forces (a
-  // wall or a step narrower than the triangles; the improvement counts
-  // them, so with Mesher_options::optimize off there is one attempt); the
-  // attempt with the fewest is kept.  0: one attempt.
+  // mesh_remeshed_surfaces: times, at most 20, the surfaces are remeshed
+  // again, each time 10% shorter, while the mesh keeps tetrahedra under
+  // Mesher_options::quality_threshold (gamma) whose four vertices are on
+  // the surface and that no triangle's shape forces (a wall or a step
+  // narrower than the triangles; the improvement counts them, so with
+  // Mesher_options::optimize off there is one attempt); the attempt with
+  // the fewest is kept.  Mesher_options::progress reports each attempt's
+  // passes.  0: one attempt.
   unsigned int shortenings = 3;
 };
 
@@ -91,6 +94,7 @@ inline void check_options(const Surface_remeshing_options& options)
   if(!(options.sharp_edge_angle >= 0 && options.sharp_edge_angle <= 180))
     throw std::invalid_argument("remesh_surfaces: sharp_edge_angle must be in [0, 180] degrees");
   if(options.iterations < 1) throw std::invalid_argument("remesh_surfaces: iterations must be at least 1");
+  if(options.shortenings > 20) throw std::invalid_argument("remesh_surfaces: shortenings must be at most 20");
 }
 
 // The smallest angle of triangle (a, b, c), in radians.
@@ -280,6 +284,11 @@ inline Surface_triangles remeshed(const Surface_soup& soup, const Surface_remesh
   return remeshed(soup, options, checked);
 }
 
+// Each shortening multiplies the length by this: 10% is about the step
+// between lengths that do and do not resolve a thin part (couplingdown:
+// 0.040 does, 0.042 does not), and 3 of them reach 0.73 times the length.
+constexpr double shortening_factor = 0.9;
+
 // Remeshes what read_soup reads and meshes it, shortening the length as
 // Surface_remeshing_options::shortenings says.  A wall or a step narrower
 // than the triangles leaves tetrahedra with four vertices on the surface
@@ -287,59 +296,66 @@ inline Surface_triangles remeshed(const Surface_soup& soup, const Surface_remesh
 // 0.048 a triangle 0.048 wide lies 0.0094 over the foot of a step, and the
 // smallest dihedral angle stays at 8.3 degrees; 0.9 and 0.81 times that
 // length leave such tetrahedra too, 0.73 times none (15.0 degrees).
-// Which length works is not monotone (0.04 works there, 0.042 does not):
-// each attempt is meshed and judged by the mesh itself.
+// Which length works is not monotone (0.040 works there, 0.042 does not),
+// so each attempt is meshed and judged by its mesh, and an attempt that
+// fails (a shorter surface the mesher refuses, a recovery that fails)
+// does not end the search.
 template <class Read_soup>
 Tetrahedral_mesh mesh_remeshed(Read_soup read_soup, const Surface_remeshing_options& remeshing,
                                const Mesher_options& options, Mesher_statistics* statistics)
 {
+  using mesher_detail::seconds_since;
   check_options(remeshing);
   if(options.optimize) mesher_detail::improvement_options_of(options, "Tetrahedral_mesher"); // before any work
-  auto seconds_since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
   auto t0 = std::chrono::steady_clock::now();
   const Surface_soup soup = read_soup();
-  double remeshing_seconds = seconds_since(t0), discarded_seconds = 0;
+  const double input_seconds = seconds_since(t0);
+  double remeshing_seconds = 0, discarded_seconds = 0;
   Tetrahedral_mesh kept;
   Mesher_statistics kept_stats;
   std::size_t kept_left = 0;
+  bool have_kept = false;
   double length = remeshing.target_edge_length;
-  int attempts = 0;
-  for(unsigned int attempt = 0; attempt <= remeshing.shortenings; ++attempt, length *= 0.9) {
+  unsigned int attempts = 0;
+  for(unsigned int attempt = 0; attempt <= remeshing.shortenings; ++attempt, length *= shortening_factor) {
     Surface_remeshing_options shorter = remeshing;
     shorter.target_edge_length = length;
-    t0 = std::chrono::steady_clock::now();
-    Surface_soup checked;
-    Surface_triangles surface;
-    try {
-      surface = remeshed(soup, shorter, checked);
-    } catch(const Fast_Delaunay_triangulation_3_internal::mesher::Invalid_surface&) {
-      // A shorter length whose surface the mesher would refuse (it meets
-      // another surface) ends the shortening with what was kept.
-      if(attempt == 0) throw;
-      remeshing_seconds += seconds_since(t0);
-      break;
-    }
-    remeshing_seconds += seconds_since(t0);
     ++attempts;
+    Surface_soup checked;
+    std::size_t triangles = 0;
     Mesher_statistics stats;
-    Tetrahedral_mesh mesh = mesher_detail::read_and_mesh([&] { return std::move(checked); }, options, &stats,
-                                                         [](const auto&, const auto&) {});
+    Tetrahedral_mesh mesh;
+    t0 = std::chrono::steady_clock::now();
+    try {
+      remeshed(soup, shorter, checked);
+      triangles = checked.triangles.size();
+      remeshing_seconds += seconds_since(t0);
+      t0 = std::chrono::steady_clock::now();
+      mesh = mesher_detail::read_and_mesh([&] { return std::move(checked); }, options, &stats,
+                                          [](const auto&, const auto&) {});
+    } catch(const std::exception&) {
+      // The first attempt's failure is the caller's; a later one is an
+      // attempt not kept.
+      if(!have_kept) throw;
+      discarded_seconds += seconds_since(t0);
+      continue;
+    }
     const std::size_t left = stats.improvement.bad_after_on_surface_not_forced;
-    if(attempt == 0 || left < kept_left) {
-      if(attempt > 0) discarded_seconds += kept_stats.input_seconds + kept_stats.total_seconds;
+    if(!have_kept || left < kept_left) {
+      if(have_kept) discarded_seconds += kept_stats.input_seconds + kept_stats.total_seconds;
       kept = std::move(mesh);
       kept_stats = stats;
       kept_stats.remeshed_edge_length = length;
-      kept_stats.remeshed_triangles = surface.triangles.size();
+      kept_stats.remeshed_triangles = triangles;
       kept_left = left;
+      have_kept = true;
     } else {
       discarded_seconds += stats.input_seconds + stats.total_seconds;
     }
     // Without the improvement the bad tetrahedra are not counted.
     if(left == 0 || !options.optimize) break;
   }
+  kept_stats.input_seconds += input_seconds;
   kept_stats.remeshing_seconds = remeshing_seconds;
   kept_stats.remeshing_attempts = attempts;
   kept_stats.discarded_meshing_seconds = discarded_seconds;

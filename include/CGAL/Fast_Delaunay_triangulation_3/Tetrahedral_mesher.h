@@ -144,11 +144,12 @@ struct Mesher_statistics
   // What the improvement did; all zero when options.optimize is off.
   Fast_Delaunay_triangulation_3_internal::mesher::Improvement_statistics improvement;
   // mesh_remeshed_surfaces (Surface_remeshing.h); all zero otherwise: the
-  // remeshings' seconds, their number, the edge length and triangles of
-  // the one kept, and the seconds spent meshing the others (total_seconds
-  // counts both).
+  // seconds of the remeshings (with the checks of their output), the
+  // attempts, the edge length and triangles of the one kept, and the
+  // seconds spent meshing the others or failing (total_seconds counts both;
+  // input_seconds is then the reading and checking of the input).
   double remeshing_seconds = 0, discarded_meshing_seconds = 0, remeshed_edge_length = 0;
-  int remeshing_attempts = 0;
+  unsigned int remeshing_attempts = 0;
   std::size_t remeshed_triangles = 0;
 };
 

@@ -111,10 +111,10 @@ struct Improvement_statistics
   // every facet improve_mesh keeps: the boundary and the interfaces.
   std::size_t bad_after_forced_by_surface = 0;
   // Of the bad tetrahedra left, those whose four vertices are on the
-  // surface and that stand on no such facet: triangles wider than the
-  // material under them (a wall or a step narrower than they are) leave
-  // these, and a finer surface mends them (mesh_remeshed_surfaces,
-  // Surface_remeshing.h, shortens its length while there are some).
+  // surface and that stand on no forcing facet (as counted just above):
+  // triangles wider than the material under them (a wall or a step
+  // narrower than they are) leave these, and only a finer surface mends
+  // them.
   std::size_t bad_after_on_surface_not_forced = 0;
   std::size_t edge_removals = 0, face_removals = 0, relocations = 0;
   std::size_t steiner_points = 0; // interior vertices added by edge or facet splits or in a cavity
