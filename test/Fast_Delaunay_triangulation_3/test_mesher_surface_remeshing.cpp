@@ -334,13 +334,17 @@ TEST(SurfaceRemeshing, MeshingShortensTheLengthWhereAWallIsThinnerThanIt)
 TEST(SurfaceRemeshing, BadOptionsAndSurfacesAreRefused)
 {
   const mesher_shapes::Surface cube = mesher_shapes::cube(0, 1);
-  auto message_of = [&](const Surface_remeshing_options& options, const mesher_shapes::Surface& s) -> std::string {
+  // What `call` is refused with, or "accepted".
+  auto refusal_of = [](auto&& call) -> std::string {
     try {
-      remesh_surfaces(s.points, s.triangles, options);
+      call();
     } catch(const std::invalid_argument& e) {
       return e.what();
     }
     return "accepted";
+  };
+  auto message_of = [&](const Surface_remeshing_options& options, const mesher_shapes::Surface& s) {
+    return refusal_of([&] { remesh_surfaces(s.points, s.triangles, options); });
   };
   for(double length : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
     EXPECT_NE(message_of({length}, cube).find("target_edge_length must be positive"), std::string::npos) << length;
@@ -356,21 +360,13 @@ TEST(SurfaceRemeshing, BadOptionsAndSurfacesAreRefused)
   options.iterations = 3;
   options.shortenings = 21;
   EXPECT_NE(message_of(options, cube).find("shortenings"), std::string::npos);
-  auto meshing_message_of = [&](auto&& mesh_it) -> std::string {
-    try {
-      mesh_it();
-    } catch(const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "accepted";
-  };
-  EXPECT_NE(meshing_message_of([&] { mesh_remeshed_surfaces(cube.points, cube.triangles, {0.0}); })
+  EXPECT_NE(refusal_of([&] { mesh_remeshed_surfaces(cube.points, cube.triangles, {0.0}); })
                 .find("target_edge_length must be positive"),
             std::string::npos);
   // Refused before the file is read: the targets are checked first.
   Mesher_options bad_target;
   bad_target.quality_threshold = 2;
-  EXPECT_NE(meshing_message_of([&] { mesh_remeshed_surface_files({"no such file.off"}, {0.1}, bad_target); })
+  EXPECT_NE(refusal_of([&] { mesh_remeshed_surface_files({"no such file.off"}, {0.1}, bad_target); })
                 .find("quality_threshold"),
             std::string::npos);
 

@@ -43,10 +43,10 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <exception>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <sstream>
 #include <stdexcept>
 #include <string>
