@@ -154,7 +154,7 @@ int main(int argc, char** argv)
       std::cout << "input (read and check)  " << stats.input_seconds << " s\n"
                 << "empty mesh              " << stats.empty_mesh_seconds << " s\n"
                 << "boundary recovery       " << stats.recovery_seconds << " s ("
-                << stats.missing_triangles << " input triangles missing from the empty mesh"
+                << stats.missing_triangles << " surface triangles missing from the empty mesh"
                 << (stats.missing_triangles == 0 ? std::string()
                     : stats.whole_surface_to_tetgen
                         ? ", recovered by TetGen on the whole surface"
@@ -168,7 +168,7 @@ int main(int argc, char** argv)
                 << (stats.triangles_over_size == 0
                         ? std::string("\n")
                         : " (" + std::to_string(stats.triangles_over_size) +
-                              " input triangles over the size next to them: the surface is never split, so the "
+                              " surface triangles over the size next to them: the surface is never split, so the "
                               "tetrahedra along them stay large or flat; remesh the surface to the size first: "
                               "--remesh-surface L)\n")
                 << "refinement              " << stats.refinement_seconds << " s (" << stats.refinement_passes
@@ -188,7 +188,7 @@ int main(int argc, char** argv)
                   << "  tetrahedra under gamma " << options.quality_threshold << ": " << im.bad_before << " before, "
                   << im.bad_after << " after (" << im.bad_after_on_surface
                   << " with all four vertices on the surface; " << im.bad_after_forced_by_surface
-                  << " forced: on an input triangle under which no tetrahedron reaches "
+                  << " forced: on a surface triangle under which no tetrahedron reaches "
                   << options.quality_threshold << "); min gamma " << im.min_gamma_before << " -> "
                   << im.min_gamma_after << "\n"
                   << "  smallest dihedral angle " << im.min_dihedral_before << " -> " << im.min_dihedral_after

@@ -406,7 +406,7 @@ inline void print_quality_report(std::ostream& out, const CGAL::Fast_mesher_3::Q
       << ", mean " << q.mean_gamma << "; " << q.tetrahedra_below_gamma_0_3 << " tetrahedra under 0.3";
   if(q.input_triangles_forcing_gamma_0_3 != 0)
     out << " (" << q.tetrahedra_forced_below_gamma_0_3 << " of them forced: on one of the "
-        << q.input_triangles_forcing_gamma_0_3 << " input triangles under which no tetrahedron reaches 0.3)";
+        << q.input_triangles_forcing_gamma_0_3 << " surface triangles under which no tetrahedron reaches 0.3)";
   out << "\n";
   for(std::size_t b = 0; b < q.gamma_histogram.size(); ++b)
     out << "  [" << b / 10.0 << ", " << (b + 1) / 10.0 << (b + 1 == q.gamma_histogram.size() ? "] " : ") ")
@@ -426,8 +426,8 @@ inline void print_quality_report(std::ostream& out, const CGAL::Fast_mesher_3::Q
   else
     out << "edges: " << q.edges << " (no sizes in the mesh: none measured against h)\n";
   out << "inverted tetrahedra: " << q.inverted_tetrahedra << "\n";
-  out << "boundary equals the input: " << (q.boundary_equals_input() ? "yes" : "NO") << " ("
-      << q.missing_input_triangles << " input triangles missing, " << q.extra_boundary_facets
+  out << "boundary equals the surface: " << (q.boundary_equals_input() ? "yes" : "NO") << " ("
+      << q.missing_input_triangles << " surface triangles missing, " << q.extra_boundary_facets
       << " extra boundary facets)\n";
 }
 
