@@ -8,6 +8,7 @@
 // thread, also from the partitions' threads; a malformed file is refused
 // with its line, the options left as they were.
 
+#include <CGAL/Fast_Delaunay_triangulation_3/Surface_remeshing.h>
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 
 #include <gtest/gtest.h>
@@ -191,6 +192,21 @@ TEST(SizeField, CapPerSubdomain)
   Mesher_options negative;
   negative.subdomain_sizes = {-1};
   EXPECT_THROW(mesh_surfaces(s.points, s.triangles, negative), std::invalid_argument);
+  // Bad bounds are refused before the file is read, and before a remeshing.
+  Mesher_options no_size;
+  no_size.maximum_size = 0;
+  for(const Mesher_options& bad : {negative, no_size}) {
+    const std::string name = bad.maximum_size > 0 ? "subdomain_sizes[0]" : "maximum_size";
+    for(int remeshed = 0; remeshed < 2; ++remeshed) {
+      try {
+        if(remeshed) mesh_remeshed_surface_files({"no such file.off"}, {0.1}, bad);
+        else mesh_surface_files({"no such file.off"}, bad);
+        ADD_FAILURE() << name << " accepted";
+      } catch(const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+      }
+    }
+  }
 }
 
 // Input triangles over the size next to them are counted once each, with

@@ -306,7 +306,7 @@ Tetrahedral_mesh mesh_remeshed(Read_soup read_soup, const Surface_remeshing_opti
 {
   using mesher_detail::seconds_since;
   check_options(remeshing);
-  if(options.optimize) mesher_detail::improvement_options_of(options, "Tetrahedral_mesher"); // before any work
+  mesher_detail::check_mesher_options(options); // before any work
   auto t0 = std::chrono::steady_clock::now();
   const Surface_soup soup = read_soup();
   const double input_seconds = seconds_since(t0);

@@ -182,19 +182,36 @@ inline Improvement_options improvement_options_of(const Mesher_options& options,
   return improvement;
 }
 
-// The user's bounds of h, at the unit scale of `scaling`.
-inline void set_size_bounds(const Mesher_options& options, const Unit_scaling& scaling, Size_field& field)
+// Throws std::invalid_argument for a bound of h out of range.
+inline void check_size_bounds(const Mesher_options& options)
 {
   if(!(options.maximum_size > 0)) throw std::invalid_argument("Tetrahedral_mesher: maximum_size must be positive");
-  field.set_cap(scaling.to_unit(options.maximum_size));
-  std::vector<double> caps(options.subdomain_sizes.size() + 1, 0.0);
   for(std::size_t s = 0; s < options.subdomain_sizes.size(); ++s) {
     const double h = options.subdomain_sizes[s];
     if(!(h >= 0) || std::isinf(h))
       throw std::invalid_argument("Tetrahedral_mesher: subdomain_sizes[" + std::to_string(s) +
                                   "] (subdomain " + std::to_string(s + 1) + ") must be a finite size, or 0 for none");
-    caps[s + 1] = scaling.to_unit(h);
   }
+}
+
+// What can be refused of the options before anything is read or meshed:
+// the bounds of h and, when the mesh is improved, the improvement's targets
+// (a bad size would otherwise be found only once the boundary is recovered,
+// after every remeshing of the surface).
+inline void check_mesher_options(const Mesher_options& options)
+{
+  check_size_bounds(options);
+  if(options.optimize) improvement_options_of(options, "Tetrahedral_mesher");
+}
+
+// The user's bounds of h, at the unit scale of `scaling`.
+inline void set_size_bounds(const Mesher_options& options, const Unit_scaling& scaling, Size_field& field)
+{
+  check_size_bounds(options);
+  field.set_cap(scaling.to_unit(options.maximum_size));
+  std::vector<double> caps(options.subdomain_sizes.size() + 1, 0.0);
+  for(std::size_t s = 0; s < options.subdomain_sizes.size(); ++s)
+    caps[s + 1] = scaling.to_unit(options.subdomain_sizes[s]);
   field.set_subdomain_caps(std::move(caps));
   if(options.size_function) {
     const std::function<double(double, double, double)> h = options.size_function;
@@ -284,7 +301,7 @@ Tetrahedral_mesh read_and_mesh(Read_soup read_soup, const Mesher_options& option
                                On_mesh on_mesh)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  if(options.optimize) improvement_options_of(options, "Tetrahedral_mesher"); // refuses bad targets up front
+  check_mesher_options(options);
   Surface_soup soup = read_soup();
   const Unit_scaling scaling(soup);
   scaling.scale(soup);
