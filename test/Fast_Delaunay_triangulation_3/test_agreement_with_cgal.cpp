@@ -37,7 +37,7 @@ std::vector<Case> cases()
 {
   std::vector<Case> all;
   for(const char* d : {"uniform", "gauss", "clusters", "sphere", "grid", "duplicates", "offset", "tiny"})
-    for(std::size_t n : {std::size_t(20), std::size_t(500), std::size_t(20000)})
+    for(std::size_t n : {std::size_t(20), std::size_t(500), std::size_t(sanitized_build ? 5000 : 20000)})
       all.push_back({d, n});
   return all;
 }
