@@ -852,10 +852,9 @@ equal to an earlier vertex's point names that vertex.)")
 
 #ifdef FDT3_PYTHON_WITH_MESHER
   const double default_dihedral_target = CGAL::Fast_mesher_3::Mesher_options().min_dihedral_target;
-  m.def("mesh", &mesh, py::arg("vertices"), py::arg("triangles"), py::arg("size") = py::none(),
-        py::arg("threads") = py::none(), py::arg("optimize") = true, py::arg("size_field") = py::none(),
-        py::arg("min_dihedral_target") = default_dihedral_target, py::arg("remesh_surface") = py::none(),
-        R"(Tetrahedral mesh of the volumes bounded by closed triangulated surfaces.
+  // The remeshing's attempts and their shortening, from the library's values.
+  static const std::string mesh_doc =
+      std::string(R"(Tetrahedral mesh of the volumes bounded by closed triangulated surfaces.
 
 vertices (n, 3), triangles (t, 3) indices into vertices.  Returns (points,
 tets, subdomains): tets positively oriented, subdomain 1, 2, ... per
@@ -871,13 +870,19 @@ the tetrahedra under gamma 0.3 or with a dihedral angle under
 min_dihedral_target degrees (0: gamma alone; out of [0, 70] raises
 ValueError).  remesh_surface: an edge length to remesh the surfaces to
 first (CGAL's isotropic remeshing, each surface alone; edges where the
-normals differ by over 60 degrees kept as polylines; up to 3 times 10%
+normals differ by over 60 degrees kept as polylines; up to )") +
+      std::to_string(CGAL::Fast_mesher_3::Surface_remeshing_options().shortenings) + " times " +
+      std::to_string(std::lround(100 * (1 - CGAL::Fast_mesher_3::remeshing_detail::shortening_factor))) + R"(%
 shorter while walls narrower than the triangles leave bad tetrahedra with
 four vertices on the surface); the boundary is then not the given
 triangles, and where the surface is coarser than the size this removes the
 flat tetrahedra its large triangles force.  A surface that is not closed, oriented,
 manifold and free of self-intersections raises ValueError naming the
-triangles.)");
+triangles.)";
+  m.def("mesh", &mesh, py::arg("vertices"), py::arg("triangles"), py::arg("size") = py::none(),
+        py::arg("threads") = py::none(), py::arg("optimize") = true, py::arg("size_field") = py::none(),
+        py::arg("min_dihedral_target") = default_dihedral_target, py::arg("remesh_surface") = py::none(),
+        mesh_doc.c_str());
   m.def("improve_mesh", &improve_mesh, py::arg("points"), py::arg("tets"), py::arg("subdomains") = py::none(),
         py::arg("triangles") = py::none(), py::arg("quality_threshold") = 0.3, py::arg("threads") = py::none(),
         py::arg("add_points") = true, py::arg("passes") = 10,

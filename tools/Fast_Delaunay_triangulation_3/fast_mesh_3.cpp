@@ -32,6 +32,13 @@
 
 namespace {
 
+// Each remeshing attempt's shortening as the help and the report write it,
+// from the library's factor, so that the words follow the code.
+std::string shortening_percent()
+{
+  return std::to_string(std::lround(100 * (1 - CGAL::Fast_mesher_3::remeshing_detail::shortening_factor))) + "%";
+}
+
 int usage(const char* program)
 {
   std::cerr << "usage: " << program
@@ -52,7 +59,8 @@ int usage(const char* program)
             << "  --remesh-surface L     remesh the surfaces to edge length L first (edges where the normals\n"
             << "                         differ by over 60 degrees kept as polylines): the boundary is then\n"
             << "                         not the input's triangles, and h follows L where no smaller size is given;\n"
-            << "                         remeshed up to 3 times 10% shorter while walls narrower than the\n"
+            << "                         remeshed up to " << CGAL::Fast_mesher_3::Surface_remeshing_options().shortenings
+            << " times " << shortening_percent() << " shorter while walls narrower than the\n"
             << "                         triangles leave bad tetrahedra with four vertices on the surface\n"
             << "                         (with --optimize 1, which counts them)\n"
             << "  --quiet      print nothing but errors\n";
@@ -147,7 +155,7 @@ int main(int argc, char** argv)
                   << stats.remeshed_triangles << " triangles of edge length about " << stats.remeshed_edge_length;
         if(stats.remeshing_attempts > 1)
           std::cout << "; " << stats.remeshing_attempts
-                    << " attempts, each 10% shorter while bad tetrahedra with four vertices on the surface remained, "
+                    << " attempts, each " << shortening_percent() << " shorter while bad tetrahedra with four vertices on the surface remained, "
                     << stats.discarded_meshing_seconds << " s meshing those not kept";
         std::cout << ")\n";
       }
