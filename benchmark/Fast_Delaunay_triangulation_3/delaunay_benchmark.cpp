@@ -119,6 +119,7 @@ struct Attempt_report
 {
   std::uint64_t points = 0, inserted = 0, mesh_vertices = 0;
   int partitions = 0;
+  bool plane_cut = false;
   double seconds = 0;
 };
 constexpr int max_attempt_rows = 48;
@@ -383,6 +384,7 @@ Engine_result run_fast_parallel_with_attempts(const Points& points, int threads)
     a.inserted = round.inserted;
     a.mesh_vertices = round.mesh_vertices;
     a.partitions = round.partitions;
+    a.plane_cut = round.plane_cut;
     a.seconds = round.seconds;
   }
   return result;
@@ -1023,17 +1025,19 @@ void print_phases(const Row& row)
 // The paper's Table 2 for one fast-par+log run.
 void print_attempts(const Row& row)
 {
-  std::printf("\nfast-par attempts with %d partitions (paper Table 2; 1 partition = sequential finish)\n",
+  std::printf("\nfast-par attempts with %d partitions (paper Table 2; 1 partition = sequential finish; cut: along the "
+              "curve, or by a median plane)\n",
               row.threads);
-  std::printf("%8s %12s %12s %8s %11s %14s %9s\n", "attempt", "points", "inserted", "ratio", "partitions",
-              "mesh vertices", "seconds");
+  std::printf("%8s %12s %12s %8s %11s %6s %14s %9s\n", "attempt", "points", "inserted", "ratio", "partitions",
+              "cut", "mesh vertices", "seconds");
   std::uint64_t total = 0;
   std::vector<std::uint64_t> by_partitions(256, 0);
   for(std::size_t i = 0; i < row.attempts.size(); ++i) {
     const Attempt_report& a = row.attempts[i];
-    std::printf("%8zu %12s %12s %7.1f%% %11d %14s %9.3f\n", i + 1, with_commas(a.points).c_str(),
+    std::printf("%8zu %12s %12s %7.1f%% %11d %6s %14s %9.3f\n", i + 1, with_commas(a.points).c_str(),
                 with_commas(a.inserted).c_str(), a.points ? 100.0 * double(a.inserted) / double(a.points) : 0.0,
-                a.partitions, with_commas(a.mesh_vertices).c_str(), a.seconds);
+                a.partitions, a.partitions == 1 ? "-" : a.plane_cut ? "plane" : "curve",
+                with_commas(a.mesh_vertices).c_str(), a.seconds);
     total += a.inserted;
     by_partitions[static_cast<std::size_t>(std::min(a.partitions, 255))] += a.inserted;
   }

@@ -289,7 +289,11 @@ Section \ref Fast_Delaunay_triangulation_3Options of the manual. Fields:
 `insertion_seconds`, `finish_seconds`, and `kernel`, whose fields are the
 counters `inserted`, `duplicates`, `walk_steps`, `cavity_tets`, `ball_tets`,
 `conflict_tests`, `small_cavities`, `large_cavities` and, when phase timing is
-on, `walk_seconds`, `cavity_seconds`, `ball_seconds`.
+on, `walk_seconds`, `cavity_seconds`, `ball_seconds`; and `rounds`, one row per
+attempt of a parallel insertion (the paper's Table 2; empty when sequential):
+`points`, `inserted`, `partitions`, `mesh_vertices`, `retried` (cavities
+searched again, barrier engine), `plane_cut` (2 partitions cut by a median
+plane instead of the curve) and `seconds`.
 */
 typedef unspecified_type Insertion_report;
 
