@@ -703,9 +703,9 @@ private:
   // points' median elsewhere, the partitions' border follows the curve's
   // cells in steps and meets more tetrahedra.  Measured on 1e6 points, 2
   // threads (medians of 3 alternating runs of 3 rounds, curve / planes):
-  // bunny00's surface, median 12.5% off, 0.856 / 0.817 s (its big round
+  // bunny00's surface, median 12.5% off, 0.881 / 0.815 s (its big round
   // settles 96.0% instead of 93.3%, the retry 95.0% instead of 78.8%);
-  // 20 clusters, 6-7% off, 0.869 / 0.802 s.  Where the median is near the
+  // 20 clusters, 6-7% off, 0.858 / 0.825 s.  Where the median is near the
   // middle (uniform, Gaussian, shell, torus: at most 1% off) the curve stays:
   // planes there made the torus 3.5% slower (0.793 / 0.821 s), since a
   // partition's points, in curve order, jump wherever the curve crosses a
