@@ -124,6 +124,12 @@ struct Attempt_report
 };
 constexpr int max_attempt_rows = 48;
 
+// With the attempts: the report's seconds outside them.
+struct Outside_attempts
+{
+  double sort = 0, init = 0, finish = 0;
+};
+
 // What one run of an engine sends back. Trivially copyable: it crosses the pipe from the child as bytes.
 struct Engine_result
 {
@@ -134,8 +140,7 @@ struct Engine_result
   int attempt_rows = 0;              // rows of `attempts` filled (--verbose runs of fast-par)
   int attempts_left_out = 0;         // rows beyond max_attempt_rows
   Attempt_report attempts[max_attempt_rows];
-  Phase_report outside_attempts;     // with attempts: the report's sort and initial simplex seconds
-  double finish_seconds = 0;         // with attempts: the report's finishing seconds
+  Outside_attempts outside_attempts; // with attempts
 };
 static_assert(std::is_trivially_copyable<Engine_result>::value, "Engine_result is sent through a pipe");
 
@@ -372,9 +377,9 @@ Engine_result run_fast_parallel_with_attempts(const Points& points, int threads)
   Fast_parallel_dt triangulation;
   triangulation.set_number_of_threads(threads);
   Engine_result result = insert_and_count(triangulation, points);
-  result.outside_attempts = phase_report_of(triangulation.last_insertion_report());
-  result.finish_seconds = triangulation.last_insertion_report().finish_seconds;
-  for(const auto& round : triangulation.last_insertion_report().rounds) {
+  const Insertion_report& report = triangulation.last_insertion_report();
+  result.outside_attempts = {report.sort_seconds, report.init_seconds, report.finish_seconds};
+  for(const auto& round : report.rounds) {
     if(result.attempt_rows == max_attempt_rows) {
       ++result.attempts_left_out;
       continue;
@@ -824,8 +829,8 @@ struct Row
   bool has_phases = false;
   std::vector<Attempt_report> attempts; // --verbose rows of fast-par
   int attempts_left_out = 0;
-  Phase_report outside_attempts;        // with attempts: sort and initial simplex seconds
-  double finish_seconds = 0, attempts_run_seconds = 0; // with attempts: finishing, and the whole run
+  Outside_attempts outside_attempts;    // with attempts
+  double attempts_run_seconds = 0;      // with attempts: the whole run
 };
 
 std::vector<Row> rows_of(const Options& options)
@@ -859,7 +864,6 @@ void record(Row& row, const Child_report& report)
     row.attempts.assign(report.result.attempts, report.result.attempts + report.result.attempt_rows);
     row.attempts_left_out = report.result.attempts_left_out;
     row.outside_attempts = report.result.outside_attempts;
-    row.finish_seconds = report.result.finish_seconds;
     row.attempts_run_seconds = report.result.seconds;
   }
 }
@@ -1047,11 +1051,10 @@ void print_attempts(const Row& row)
   // the rounds' point lists).
   double in_attempts = 0;
   for(const Attempt_report& a : row.attempts) in_attempts += a.seconds;
-  const double sort = row.outside_attempts.sort_seconds, init = row.outside_attempts.init_seconds;
+  const Outside_attempts& o = row.outside_attempts;
   std::printf("outside the attempts: sort %.3f s, initial tetrahedron %.3f s, finishing %.3f s, other %.3f s; "
               "run %.3f s\n",
-              sort, init, row.finish_seconds,
-              std::max(0.0, row.attempts_run_seconds - in_attempts - sort - init - row.finish_seconds),
+              o.sort, o.init, o.finish, std::max(0.0, row.attempts_run_seconds - in_attempts - o.sort - o.init - o.finish),
               row.attempts_run_seconds);
   std::printf("inserted by:");
   for(int k = 255; k >= 1; --k)

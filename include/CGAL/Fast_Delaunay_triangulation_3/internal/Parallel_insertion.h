@@ -766,8 +766,7 @@ private:
     const std::size_t below = plan.sorted.size();
     for(Vertex_id v : points)
       if(!(m_.point(v)[axis] < median)) plan.sorted.push_back(v);
-    plan.cut = {0, below, points.size()};
-    plan.first_key.assign(3, 0); // unused: no curve
+    plan.cut = {0, below, points.size()}; // first_key stays empty: no curve
     partition_of_vertex_.resize(m_.vertices.size());
     for_each_range(mesh_vertex_end(points), 2, [&](std::size_t begin, std::size_t end) {
       for(std::size_t v = begin; v < end; ++v)
