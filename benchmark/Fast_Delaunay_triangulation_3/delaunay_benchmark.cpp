@@ -1030,7 +1030,7 @@ void print_phases(const Row& row)
 void print_attempts(const Row& row)
 {
   std::printf("\nfast-par attempts with %d partitions (paper Table 2; 1 partition = sequential finish; cut: along the "
-              "curve, or by a median plane)\n",
+              "curve, or by median planes)\n",
               row.threads);
   std::printf("%8s %12s %12s %8s %11s %6s %14s %9s\n", "attempt", "points", "inserted", "ratio", "partitions",
               "cut", "mesh vertices", "seconds");

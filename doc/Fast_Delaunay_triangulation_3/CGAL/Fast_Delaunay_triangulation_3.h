@@ -292,8 +292,8 @@ counters `inserted`, `duplicates`, `walk_steps`, `cavity_tets`, `ball_tets`,
 on, `walk_seconds`, `cavity_seconds`, `ball_seconds`; and `rounds`, one row per
 attempt of a parallel insertion (the paper's Table 2; empty when sequential):
 `points`, `inserted`, `partitions`, `mesh_vertices`, `retried` (cavities
-searched again, barrier engine), `plane_cut` (2 partitions cut by a median
-plane instead of the curve) and `seconds`.
+searched again, barrier engine), `plane_cut` (the partitions cut by median
+planes instead of the curve) and `seconds`.
 */
 typedef unspecified_type Insertion_report;
 

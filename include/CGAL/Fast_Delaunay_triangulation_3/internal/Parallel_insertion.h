@@ -66,7 +66,7 @@ struct Partition_round
   // cavities searched again in a later iteration because a run of smaller
   // index claimed one of their tetrahedra.
   std::size_t retried = 0;
-  // 2 partitions split by a median plane instead of the curve (see
+  // Partitions cut by median planes instead of the curve (see
   // Partitioned_insertion::off_centre_median).
   bool plane_cut = false;
   double seconds = 0;
@@ -208,7 +208,7 @@ public:
         points.clear();
       } else {
         std::vector<Vertex_id> failed;
-        if(attempt == 0) plane_cuts_ = partitions == 2 && off_centre_median(points);
+        if(attempt == 0) plane_cuts_ = off_centre_median(points);
         row.plane_cut = by_plane(attempt, partitions);
         insert_partitioned(points, partitions, attempt++, rotated, first_new, duplicate_of, failed, stats, policy);
         row.inserted = points.size() - failed.size();
@@ -618,7 +618,7 @@ private:
     const bool plane = by_plane(attempt, partitions);
     Attempt_cut plan;
     if(plane) {
-      plan = cut_by_median_plane(points);
+      plan = cut_by_median_planes(points, partitions);
     } else {
       if(attempt == 0) choose_first_cut(points, partitions, rotated);
       const Attempt_curve keys(lo_, hi_, transform_for(attempt, partitions, 3 * Attempt_curve::bits));
@@ -688,7 +688,11 @@ private:
     // the first attempt instead of computing every mesh vertex's key, a price
     // that sent the retry of 2 partitions to the sequential finish (1e6
     // points near a torus: 17,463 points there, twice the usual cavity each,
-    // 0.07 to 0.10 s on one thread).
+    // 0.07 to 0.10 s on one thread).  Cut by planes, they fail in the
+    // partitions' order; in id order again, a retry on the curve finds its
+    // cut by binary search too (3 partitions of 1e6 points near bunny00:
+    // 82.5% of that retry settled instead of 79.0%).
+    if(plane && in_run_order(points)) std::sort(failed.begin(), failed.end());
     if(rotated && !plane) {
       std::rotate(failed.begin(), std::is_sorted_until(failed.begin(), failed.end()), failed.end());
       CGAL_assertion(std::is_sorted(failed.begin(), failed.end()));
@@ -710,6 +714,12 @@ private:
   // planes there made the torus 3.5% slower (0.793 / 0.821 s), since a
   // partition's points, in curve order, jump wherever the curve crosses a
   // plane that is not its own split.  A sample of the points suffices.
+  // More partitions follow the points the same way, as boxes of a tree of
+  // median planes: bunny00's big round of 4 partitions settles 93.3% instead
+  // of 87.1% on the curve, of 8 partitions 87.9% instead of 71.8%, and the
+  // whole insertion (4 and 8 partitions run by 2 threads, so the sum of the
+  // work) took 0.90 s instead of 1.00 s and 1.13 s instead of 1.40 s;
+  // 20 clusters: 0.85 / 0.97 s and 0.93 / 1.35 s.
   static constexpr double median_offset_for_planes = 0.05;
   bool off_centre_median(const std::vector<Vertex_id>& points) const
   {
@@ -717,60 +727,110 @@ private:
     for(int a = 0; a < 3; ++a) {
       const double middle = 0.5 * (lo_[a] + hi_[a]), extent = hi_[a] - lo_[a];
       if(!(extent > 0)) continue;
-      if(std::abs(sampled_median(points, a, stride) - middle) > median_offset_for_planes * extent) return true;
+      const double median = sampled_quantile(points.data(), points.size(), a, stride, 0.5);
+      if(std::abs(median - middle) > median_offset_for_planes * extent) return true;
     }
     return false;
   }
 
-  // The first two attempts of 2 partitions of such points: the plane
-  // through the median of the attempt's points, perpendicular to the axis
-  // along which they spread most (the retry's points lie along the first
-  // plane, so its plane crosses the first one).
-  bool by_plane(int attempt, int partitions) const { return plane_cuts_ && partitions == 2 && attempt <= 1; }
+  // Such points are cut by median planes (cut_by_median_planes) in their
+  // first attempt, and in the retry when it has 2 partitions: its points lie
+  // along the first plane, so its own plane crosses that one.  A retry of
+  // more partitions takes the curve: its points lie along several planes,
+  // and new medians fall on some of them (bunny00, 1e6 points: 27% of the
+  // retry of 4 partitions settled against 79% on the curve, 30% against 58%
+  // with 8).
+  bool by_plane(int attempt, int partitions) const
+  {
+    return plane_cuts_ && (attempt == 0 || (attempt == 1 && partitions == 2));
+  }
 
   static std::size_t median_sample_stride(std::size_t n) { return std::max<std::size_t>(1, n / 65536); }
 
-  double sampled_median(const std::vector<Vertex_id>& points, int axis, std::size_t stride) const
+  double sampled_quantile(const Vertex_id* points, std::size_t n, int axis, std::size_t stride, double q) const
   {
     std::vector<double> c;
-    c.reserve(points.size() / stride + 1);
-    for(std::size_t i = 0; i < points.size(); i += stride) c.push_back(m_.point(points[i])[axis]);
-    std::nth_element(c.begin(), c.begin() + c.size() / 2, c.end());
-    return c[c.size() / 2];
+    c.reserve(n / stride + 1);
+    for(std::size_t i = 0; i < n; i += stride) c.push_back(m_.point(points[i])[axis]);
+    const std::size_t at = std::min(c.size() - 1, std::size_t(q * double(c.size())));
+    std::nth_element(c.begin(), c.begin() + at, c.end());
+    return c[at];
   }
 
-  // Partition 0 takes the points below the plane, partition 1 the others,
-  // each in the points' order; every mesh vertex gets its side by one
-  // comparison, so no Moore key is computed.
-  Attempt_cut cut_by_median_plane(const std::vector<Vertex_id>& points)
+  // The median planes of an attempt, as a k-d tree: a node splits its
+  // points at `split` along `axis`; a child below 0 is partition -1 - child.
+  struct Plane_node
   {
-    const std::size_t stride = median_sample_stride(points.size());
+    int axis;
+    double split;
+    int below, above;
+  };
+
+  static std::uint8_t partition_in_tree(const std::vector<Plane_node>& tree, const double* p)
+  {
+    int node = 0;
+    while(node >= 0) node = p[tree[node].axis] < tree[node].split ? tree[node].below : tree[node].above;
+    return static_cast<std::uint8_t>(-1 - node);
+  }
+
+  // Partitions [first, first + k) take points[begin, end): split at the
+  // sampled quantile floor(k/2)/k of the axis along which the points spread
+  // most, the lower floor(k/2) partitions below it.  Each side keeps its
+  // points in their order.  Returns the node's index, or -1 - first for a leaf.
+  int split_by_planes(std::vector<Vertex_id>& points, std::size_t begin, std::size_t end, int first, int k,
+                      std::vector<Plane_node>& tree, std::vector<std::size_t>& cut, std::vector<Vertex_id>& above)
+  {
+    if(k == 1) {
+      cut[first + 1] = end;
+      return -1 - first;
+    }
+    Vertex_id* p = points.data() + begin;
+    const std::size_t n = end - begin, stride = median_sample_stride(n);
     double lo[3], hi[3];
     for(int a = 0; a < 3; ++a) {
       lo[a] = std::numeric_limits<double>::infinity();
       hi[a] = -lo[a];
     }
-    for(std::size_t i = 0; i < points.size(); i += stride)
+    for(std::size_t i = 0; i < n; i += stride)
       for(int a = 0; a < 3; ++a) {
-        lo[a] = std::min(lo[a], m_.point(points[i])[a]);
-        hi[a] = std::max(hi[a], m_.point(points[i])[a]);
+        lo[a] = std::min(lo[a], m_.point(p[i])[a]);
+        hi[a] = std::max(hi[a], m_.point(p[i])[a]);
       }
     int axis = 0;
     for(int a = 1; a < 3; ++a)
       if(hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
-    const double median = sampled_median(points, axis, stride);
+    const int k_below = k / 2;
+    const double split = n == 0 ? 0. : sampled_quantile(p, n, axis, stride, double(k_below) / k);
+    above.clear();
+    std::size_t below = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(m_.point(p[i])[axis] < split) p[below++] = p[i];
+      else above.push_back(p[i]);
+    }
+    std::copy(above.begin(), above.end(), p + below);
+    const int node = int(tree.size());
+    tree.push_back({axis, split, 0, 0});
+    const int lower = split_by_planes(points, begin, begin + below, first, k_below, tree, cut, above);
+    const int upper = split_by_planes(points, begin + below, end, first + k_below, k - k_below, tree, cut, above);
+    tree[node].below = lower;
+    tree[node].above = upper;
+    return node;
+  }
+
+  // A partition's points share a box of the tree's planes, and every mesh
+  // vertex finds its partition by a few comparisons (no Moore key).
+  Attempt_cut cut_by_median_planes(const std::vector<Vertex_id>& points, int partitions)
+  {
     Attempt_cut plan;
-    plan.sorted.reserve(points.size());
-    for(Vertex_id v : points)
-      if(m_.point(v)[axis] < median) plan.sorted.push_back(v);
-    const std::size_t below = plan.sorted.size();
-    for(Vertex_id v : points)
-      if(!(m_.point(v)[axis] < median)) plan.sorted.push_back(v);
-    plan.cut = {0, below, points.size()}; // first_key stays empty: no curve
+    plan.sorted = points;
+    plan.cut.assign(partitions + 1, 0); // first_key stays empty: no curve
+    std::vector<Plane_node> tree;
+    std::vector<Vertex_id> above;
+    split_by_planes(plan.sorted, 0, points.size(), 0, partitions, tree, plan.cut, above);
     partition_of_vertex_.resize(m_.vertices.size());
-    for_each_range(mesh_vertex_end(points), 2, [&](std::size_t begin, std::size_t end) {
-      for(std::size_t v = begin; v < end; ++v)
-        partition_of_vertex_[v] = m_.point(Vertex_id(v))[axis] < median ? 0 : 1;
+    for_each_range(mesh_vertex_end(points), partitions, [&](std::size_t b, std::size_t e) {
+      for(std::size_t v = b; v < e; ++v)
+        partition_of_vertex_[v] = partition_in_tree(tree, m_.point(Vertex_id(v)));
     });
     return plan;
   }
@@ -837,7 +897,7 @@ private:
   Static_filter filter_;
   Sub_determinant_filter sub_filter_;
   bool quarter_cut_first_ = false;
-  bool plane_cuts_ = false; // the current insert()'s 2 partitions are cut by planes (off_centre_median)
+  bool plane_cuts_ = false; // the current insert()'s points are cut by planes (off_centre_median)
   double lo_[3], hi_[3];
   std::uint64_t seed_;
   bool timed_;
