@@ -180,6 +180,43 @@ TEST(ParallelRefinement, TinyPartitionsFallBackToSequential)
 namespace fm = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
 namespace fi = CGAL::Fast_Delaunay_triangulation_3_internal;
 
+// A refinement whose size is far below the surface's triangles (the cube's
+// 12) keeps sampling points near them that the cavities' edge filter
+// rejects, pass after pass.  A rejected point leaves the next walk the
+// tetrahedron its own walk found: its successor along the curve is near
+// it, whereas the last ball may be anywhere by then.  In the passes that
+// insert under a tenth of the points they walk, the walks took 6 to 9 steps
+// per point; with the hint left at the last ball, 16 to 49.
+TEST(ParallelRefinement, RejectedPointsKeepTheWalksShort)
+{
+  const Case c = cases()[0]; // the cube
+  for(int threads : {1, 2}) {
+    SCOPED_TRACE(threads);
+    const CGAL::Fast_mesher_3::Mesher_options options = options_for(c, threads);
+    fm::Surface_soup soup = fm::surfaces_from_triangles(c.surface.points, c.surface.triangles);
+    const fm::Unit_scaling scaling(soup);
+    scaling.scale(soup);
+    fm::Constrained_mesh cm;
+    fm::empty_mesh_and_recovery(soup, threads, cm);
+    fm::flag_constrained_facets(soup, cm, threads);
+    fm::colour_volumes(cm);
+    CGAL::Fast_mesher_3::mesher_detail::set_size_bounds(options, scaling, cm.size);
+    fm::surface_sizes(soup, cm);
+    fm::Refinement_options refinement;
+    refinement.threads = threads;
+    refinement.min_points_per_thread = options.min_points_per_thread;
+    int rejecting_passes = 0;
+    for(const fm::Refinement_pass& pass : fm::Constrained_refinement(cm, refinement).run(nullptr)) {
+      const std::size_t walked = pass.candidates - pass.filtered_out;
+      if(walked == 0 || 10 * pass.inserted >= walked) continue;
+      ++rejecting_passes;
+      EXPECT_LT(pass.walk_steps, 15 * walked) << pass.walk_steps << " walk steps for " << walked << " points, "
+                                              << pass.inserted << " of them inserted";
+    }
+    EXPECT_GE(rejecting_passes, 3) << "the refinement did not reject most points in its late passes";
+  }
+}
+
 // The partitions of a batch's attempts come from the vertices' curve keys,
 // which the engine keeps for the batch: computed at every attempt instead,
 // they give the same partitions, hence the same mesh.
