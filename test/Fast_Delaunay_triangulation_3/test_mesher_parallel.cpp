@@ -10,7 +10,7 @@
 // ThreadSanitizer), so the partitions' threshold is lowered for the
 // partitioned attempts to run at all, and every meshing test asserts they
 // did.  The engine's kept vertex keys against keys computed at every
-// attempt.  FILTERPOINTS' runs (one per thread) on 70,000 points against
+// attempt.  The walks of passes that drop most of their points.  FILTERPOINTS' runs (one per thread) on 70,000 points against
 // the greedy filter.  The boundary recovery's threads (the region's
 // search, our flips beside TetGen's calls, the checks of the
 // replacements, the facet look-ups) on CGAL's fandisk: the same mesh and

@@ -719,7 +719,7 @@ private:
   // of 87.1% on the curve, of 8 partitions 87.9% instead of 71.8%, and the
   // whole insertion (4 and 8 partitions run by 2 threads, so the sum of the
   // work) took 0.90 s instead of 1.00 s and 1.13 s instead of 1.40 s;
-  // 20 clusters: 0.85 / 0.97 s and 0.93 / 1.35 s.
+  // 20 clusters 0.85 s instead of 0.97 s and 0.93 s instead of 1.35 s.
   static constexpr double median_offset_for_planes = 0.05;
   bool off_centre_median(const std::vector<Vertex_id>& points) const
   {
