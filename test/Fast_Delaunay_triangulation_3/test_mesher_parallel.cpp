@@ -180,6 +180,23 @@ TEST(ParallelRefinement, TinyPartitionsFallBackToSequential)
 namespace fm = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
 namespace fi = CGAL::Fast_Delaunay_triangulation_3_internal;
 
+// Case c's mesh as the mesher hands it to the refinement (recovered,
+// flagged, coloured, sized), and the refinement's options.
+void prepare_refinement(const Case& c, const CGAL::Fast_mesher_3::Mesher_options& options, fm::Constrained_mesh& cm,
+                        fm::Refinement_options& refinement)
+{
+  fm::Surface_soup soup = fm::surfaces_from_triangles(c.surface.points, c.surface.triangles);
+  const fm::Unit_scaling scaling(soup);
+  scaling.scale(soup);
+  fm::empty_mesh_and_recovery(soup, options.threads, cm);
+  fm::flag_constrained_facets(soup, cm, options.threads);
+  fm::colour_volumes(cm);
+  CGAL::Fast_mesher_3::mesher_detail::set_size_bounds(options, scaling, cm.size);
+  fm::surface_sizes(soup, cm);
+  refinement.threads = options.threads;
+  refinement.min_points_per_thread = options.min_points_per_thread;
+}
+
 // A refinement whose size is far below the surface's triangles (the cube's
 // 12) keeps sampling points near them that the cavities' edge filter
 // rejects, pass after pass.  A rejected point leaves the next walk the
@@ -192,19 +209,9 @@ TEST(ParallelRefinement, RejectedPointsKeepTheWalksShort)
   const Case c = cases()[0]; // the cube
   for(int threads : {1, 2}) {
     SCOPED_TRACE(threads);
-    const CGAL::Fast_mesher_3::Mesher_options options = options_for(c, threads);
-    fm::Surface_soup soup = fm::surfaces_from_triangles(c.surface.points, c.surface.triangles);
-    const fm::Unit_scaling scaling(soup);
-    scaling.scale(soup);
     fm::Constrained_mesh cm;
-    fm::empty_mesh_and_recovery(soup, threads, cm);
-    fm::flag_constrained_facets(soup, cm, threads);
-    fm::colour_volumes(cm);
-    CGAL::Fast_mesher_3::mesher_detail::set_size_bounds(options, scaling, cm.size);
-    fm::surface_sizes(soup, cm);
     fm::Refinement_options refinement;
-    refinement.threads = threads;
-    refinement.min_points_per_thread = options.min_points_per_thread;
+    prepare_refinement(c, options_for(c, threads), cm, refinement);
     int rejecting_passes = 0;
     for(const fm::Refinement_pass& pass : fm::Constrained_refinement(cm, refinement).run(nullptr)) {
       const std::size_t walked = pass.candidates - pass.filtered_out;
@@ -225,18 +232,9 @@ TEST(ParallelRefinement, KeptVertexKeysGiveTheSameMesh)
   const Case c = cases()[2]; // the torus
   const CGAL::Fast_mesher_3::Mesher_options options = options_for(c, 2);
   auto refine = [&](bool keep, std::size_t& settled_in_partitions) {
-    fm::Surface_soup soup = fm::surfaces_from_triangles(c.surface.points, c.surface.triangles);
-    const fm::Unit_scaling scaling(soup);
-    scaling.scale(soup);
     fm::Constrained_mesh cm;
-    fm::empty_mesh_and_recovery(soup, 2, cm);
-    fm::flag_constrained_facets(soup, cm, 2);
-    fm::colour_volumes(cm);
-    CGAL::Fast_mesher_3::mesher_detail::set_size_bounds(options, scaling, cm.size);
-    fm::surface_sizes(soup, cm);
     fm::Refinement_options refinement;
-    refinement.threads = 2;
-    refinement.min_points_per_thread = options.min_points_per_thread;
+    prepare_refinement(c, options, cm, refinement);
     refinement.keep_vertex_keys = keep;
     settled_in_partitions = 0;
     for(const fm::Refinement_pass& pass : fm::Constrained_refinement(cm, refinement).run(nullptr))
