@@ -12,9 +12,9 @@
 // An insertion whose walk or cavity cannot avoid another tetrahedron is
 // aborted and kept for the next attempt.  Later attempts change the
 // partitions with a new coordinate transform of the curve's grid and a
-// circular shift of the curve (§3.3), or, for 2 partitions of points whose
-// median lies off the middle of the box, a median plane for the first two
-// attempts; the number of partitions halves when
+// circular shift of the curve (§3.3); points whose median lies off the
+// middle of the box are cut by median planes instead in the first attempt
+// (and in the retry of 2 partitions).  The number of partitions halves when
 // fewer than 1/5 of the attempts succeed or fewer than
 // `min_points_per_partition` points per partition remain, down to a
 // sequential finish (§3.4).  The first BRIO round is always sequential.
@@ -778,7 +778,7 @@ private:
   // most, the lower floor(k/2) partitions below it.  Each side keeps its
   // points in their order.  Returns the node's index, or -1 - first for a leaf.
   int split_by_planes(std::vector<Vertex_id>& points, std::size_t begin, std::size_t end, int first, int k,
-                      std::vector<Plane_node>& tree, std::vector<std::size_t>& cut, std::vector<Vertex_id>& above)
+                      std::vector<Plane_node>& tree, std::vector<std::size_t>& cut)
   {
     if(k == 1) {
       cut[first + 1] = end;
@@ -801,17 +801,12 @@ private:
       if(hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
     const int k_below = k / 2;
     const double split = n == 0 ? 0. : sampled_quantile(p, n, axis, stride, double(k_below) / k);
-    above.clear();
-    std::size_t below = 0;
-    for(std::size_t i = 0; i < n; ++i) {
-      if(m_.point(p[i])[axis] < split) p[below++] = p[i];
-      else above.push_back(p[i]);
-    }
-    std::copy(above.begin(), above.end(), p + below);
+    const std::size_t below = std::size_t(
+        std::stable_partition(p, p + n, [&](Vertex_id v) { return m_.point(v)[axis] < split; }) - p);
     const int node = int(tree.size());
     tree.push_back({axis, split, 0, 0});
-    const int lower = split_by_planes(points, begin, begin + below, first, k_below, tree, cut, above);
-    const int upper = split_by_planes(points, begin + below, end, first + k_below, k - k_below, tree, cut, above);
+    const int lower = split_by_planes(points, begin, begin + below, first, k_below, tree, cut);
+    const int upper = split_by_planes(points, begin + below, end, first + k_below, k - k_below, tree, cut);
     tree[node].below = lower;
     tree[node].above = upper;
     return node;
@@ -825,8 +820,7 @@ private:
     plan.sorted = points;
     plan.cut.assign(partitions + 1, 0); // first_key stays empty: no curve
     std::vector<Plane_node> tree;
-    std::vector<Vertex_id> above;
-    split_by_planes(plan.sorted, 0, points.size(), 0, partitions, tree, plan.cut, above);
+    split_by_planes(plan.sorted, 0, points.size(), 0, partitions, tree, plan.cut);
     partition_of_vertex_.resize(m_.vertices.size());
     for_each_range(mesh_vertex_end(points), partitions, [&](std::size_t b, std::size_t e) {
       for(std::size_t v = b; v < e; ++v)
