@@ -14,7 +14,9 @@
 // constructions kernel; rows fast-loop / cgal-loop and fast-hint / cgal-hint (not run by default) time insert(p)
 // called once per point, without and with the previous vertex as hint; rows fast-apex / cgal-apex time insert(p) of
 // one point above the bounding box after an untimed insertion of the points (with --dist plane, points in the plane
-// z = x: the lift from dimension 2 to 3); each is compared with its CGAL counterpart.
+// z = x: the lift from dimension 2 to 3); each is compared with its CGAL counterpart. Built with TetGen, the row
+// tetgen (run by default) is TetGen's Delaunay tetrahedralization of the same points, for comparison: its failures
+// and other cell counts are notes.
 //
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,shell,torus,surface...]|all] [--surface FILE]
 //                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-par-remove,
@@ -45,6 +47,9 @@
 #include <CGAL/Triangulation_vertex_base_3.h>
 #include <tbb/global_control.h>
 #include <tbb/version.h>
+#endif
+#ifdef FDT3_WITH_TETGEN
+#include <tetgen.h>
 #endif
 
 #include "../../test/Fast_Delaunay_triangulation_3/point_sets.h"
@@ -308,6 +313,35 @@ Engine_result run_cgal_epec(const Points& points, int /*threads*/)
   return insert_exact_points_and_count<CGAL::Delaunay_triangulation_3<Exact_kernel>>(points);
 }
 
+#ifdef FDT3_WITH_TETGEN
+// TetGen's Delaunay tetrahedralization of the points (switch Q alone: no PLC, no refinement, quiet). The points
+// are copied into TetGen's input array before the clock starts, as EPEC's are made; the clock covers
+// tetrahedralize(), which sorts (BRIO and Hilbert curve), inserts and writes its output arrays. TetGen reports
+// its errors by throwing an int (its library mode).
+Engine_result run_tetgen(const Points& points, int /*threads*/)
+{
+  tetgenio in, out;
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(points.size());
+  in.pointlist = new REAL[3 * points.size()]; // tetgenio frees it
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int a = 0; a < 3; ++a) in.pointlist[3 * i + a] = points[i][a];
+  tetgenbehavior switches;
+  char quiet_delaunay[] = "Q";
+  if(!switches.parse_commandline(quiet_delaunay)) throw std::runtime_error("TetGen refused the switches");
+  Engine_result result;
+  const Clock::time_point start = Clock::now();
+  try {
+    tetrahedralize(&switches, &in, &out);
+  } catch(int code) {
+    throw std::runtime_error("TetGen stopped with error code " + std::to_string(code));
+  }
+  result.seconds = seconds_since(start);
+  result.finite_cells = static_cast<std::uint64_t>(out.numberoftetrahedra);
+  return result;
+}
+#endif
+
 #ifdef CGAL_LINKED_WITH_TBB
 typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<Kernel>,
                                              CGAL::Delaunay_triangulation_cell_base_3<Kernel>, CGAL::Parallel_tag>
@@ -404,6 +438,11 @@ struct Engine
   Engine_result (*run)(const Points& points, int threads);
   // The row this one's speed-up and cell count are compared with.
   const char* reference = "cgal";
+  // Run for comparison only: its failures and a cell count other than the reference's are notes, not warnings, and
+  // leave the exit status alone. TetGen stops on an assertion where the points are coplanar or span 10^400, and
+  // breaks ties between cospherical points (the sphere, the grid) its own way: another triangulation of the same
+  // points can have another number of cells.
+  bool comparison_only = false;
 };
 
 // The engines, in the order of the table; a new engine is one more row and one run function.
@@ -434,6 +473,9 @@ const std::vector<Engine>& engine_table()
       {"cgal-move", false, false, run_cgal_move, "cgal-move"},
       {"fast-epec", false, false, run_fast_epec, "cgal-epec"},
       {"cgal-epec", false, false, run_cgal_epec, "cgal-epec"},
+#ifdef FDT3_WITH_TETGEN
+      {"tetgen", false, true, run_tetgen, "cgal", true},
+#endif
   };
   return engines;
 }
@@ -808,6 +850,12 @@ void print_machine(std::FILE* out, const char* prefix)
                "%s         (generated once in the parent before forking, %zu bytes each) and the baseline process,\n"
                "%s         alike for every engine\n",
                c, c, c, c, c, c, sizeof(Point), c);
+#ifdef FDT3_WITH_TETGEN
+  std::fprintf(out,
+               "%s         tetgen = TetGen's tetrahedralize() with switch Q (the Delaunay tetrahedralization), the\n"
+               "%s         points copied into its input array before the clock starts\n",
+               c, c);
+#endif
 }
 
 // ------------------------------------------------------------------------------------------------ measuring
@@ -1064,25 +1112,32 @@ void print_attempts(const Row& row)
   std::printf("\n");
 }
 
-// Warnings about cell counts: every engine must find the finite cells of its CGAL counterpart (of the first engine
-// doing the same when CGAL did not run), in every round.
-std::vector<std::string> cell_count_warnings(const Measurement& m)
+// What the cell counts say: every engine must find the finite cells of its CGAL counterpart (of the first engine
+// doing the same when CGAL did not run), in every round; a failure or a different count is a warning, and makes the
+// exit status non-zero, but only a note for an engine run for comparison only (TetGen).
+struct Cell_count_check
 {
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings, notes;
+};
+
+Cell_count_check check_cell_counts(const Measurement& m)
+{
+  Cell_count_check check;
   std::map<std::string, const Row*> first_of; // by reference name
   for(const Row& row : m.rows) {
+    std::vector<std::string>& findings = row.engine->comparison_only ? check.notes : check.warnings;
     if(!row.error.empty())
-      warnings.push_back(row.label + " failed: " + row.error);
+      findings.push_back(row.label + " failed: " + row.error);
     if(row.cells_vary)
-      warnings.push_back(row.label + " found different numbers of finite cells in different rounds");
+      findings.push_back(row.label + " found different numbers of finite cells in different rounds");
     const Row* reference = reference_row(m, row);
     if(!reference && !row.seconds.empty() && !first_of.count(row.engine->reference)) first_of[row.engine->reference] = &row;
     if(!reference && first_of.count(row.engine->reference)) reference = first_of[row.engine->reference];
     if(reference && !row.seconds.empty() && row.finite_cells != reference->finite_cells)
-      warnings.push_back(row.label + " has " + with_commas(row.finite_cells) + " finite cells, " + reference->label +
+      findings.push_back(row.label + " has " + with_commas(row.finite_cells) + " finite cells, " + reference->label +
                          " has " + with_commas(reference->finite_cells));
   }
-  return warnings;
+  return check;
 }
 
 void print_table(const Measurement& m, int rounds)
@@ -1107,7 +1162,9 @@ void print_table(const Measurement& m, int rounds)
       else std::printf(" %9s", "-");
     std::printf("\n");
   }
-  for(const std::string& warning : cell_count_warnings(m)) std::printf("WARNING: %s\n", warning.c_str());
+  const Cell_count_check check = check_cell_counts(m);
+  for(const std::string& warning : check.warnings) std::printf("WARNING: %s\n", warning.c_str());
+  for(const std::string& note : check.notes) std::printf("note: %s\n", note.c_str());
   for(const Row& row : m.rows)
     if(row.has_phases) print_phases(row);
   for(const Row& row : m.rows)
@@ -1125,7 +1182,9 @@ void print_csv_header(std::FILE* out)
 
 void print_csv(std::FILE* out, const Measurement& m)
 {
-  for(const std::string& warning : cell_count_warnings(m)) std::fprintf(out, "# WARNING: %s\n", warning.c_str());
+  const Cell_count_check check = check_cell_counts(m);
+  for(const std::string& warning : check.warnings) std::fprintf(out, "# WARNING: %s\n", warning.c_str());
+  for(const std::string& note : check.notes) std::fprintf(out, "# note: %s\n", note.c_str());
   for(const Row& row : m.rows) {
     if(row.seconds.empty()) continue;
     const double t = median(row.seconds);
@@ -1197,7 +1256,7 @@ int main(int argc, char** argv)
         if(csv) std::fprintf(csv, "# %s skipped: %s\n", distribution.c_str(), m.skipped.c_str());
         continue;
       }
-      all_agree = all_agree && cell_count_warnings(m).empty();
+      all_agree = all_agree && check_cell_counts(m).warnings.empty();
       if(table) print_table(m, options.rounds);
       if(csv) print_csv(csv, m);
     }
