@@ -24,9 +24,10 @@
 #include <limits>
 
 // Default of the runtime option (Fast_Delaunay_triangulation_3::set_sub_determinants).
-// Off: measured on 1e6 uniform points, 1 thread, the cavity phase went from
-// 1.50 s to 1.31 s but the Delaunay ball from 0.72 s to 0.95 s, for 32 more
-// bytes per tetrahedron (the benchmark's --phases table has both rows).
+// Off: on 1e6 uniform points, 1 thread, they made the insertion slower
+// (1.71 s against 1.42 s: the Delaunay ball 80% longer, the cavity 9%, whose
+// reads they double) for 32 more bytes per tetrahedron (the manual's Options
+// section has the table).
 #ifndef CGAL_FDT3_SUB_DETERMINANTS
 #define CGAL_FDT3_SUB_DETERMINANTS 0
 #endif
