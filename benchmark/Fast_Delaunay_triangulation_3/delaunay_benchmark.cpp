@@ -22,7 +22,7 @@
 //                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-par-remove,
 //                                      cgal-par-remove,fast-move,cgal-move,
 //                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint,
-//                                      fast-apex,cgal-apex]
+//                                      fast-apex,cgal-apex,tetgen]
 //                           [--rounds 3] [--threads 1,2] [--phases] [--verbose] [--scalar-paths] [--csv FILE|-]
 //
 // Besides the volume distributions of the tests, shell, torus and surface are what scans give: points near a closed
@@ -70,6 +70,7 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -320,6 +321,10 @@ Engine_result run_cgal_epec(const Points& points, int /*threads*/)
 // its errors by throwing an int (its library mode).
 Engine_result run_tetgen(const Points& points, int /*threads*/)
 {
+  // TetGen counts points and their coordinates in int.
+  if(points.size() > static_cast<std::size_t>(std::numeric_limits<int>::max() / 3))
+    throw std::length_error("TetGen takes at most " + std::to_string(std::numeric_limits<int>::max() / 3) +
+                            " points");
   tetgenio in, out;
   in.firstnumber = 0;
   in.numberofpoints = static_cast<int>(points.size());
