@@ -2,7 +2,8 @@
 # The main job, from a fresh clone: installs what is missing, builds the benchmark (and the Python module) in
 # Release and runs the benchmark.
 # Without arguments: 1,000,000 uniform points, this package beside CGAL::Delaunay_triangulation_3 (sequential and,
-# with TBB, parallel) and TetGen's Delaunay tetrahedralization. Arguments go to the benchmark; `bash scripts/benchmark.sh --help` lists them, and one more:
+# with TBB, parallel) and TetGen's Delaunay tetrahedralization. Arguments go to the benchmark;
+# `bash scripts/benchmark.sh --help` lists them, and one more:
 #
 #   --plot FIGURE.png|FIGURE.svg   also draw the table (scripts/plot_benchmark.py): seconds and Mtets/s against n,
 #                                  and the speed-up against the thread count when --threads lists several; the
