@@ -10,7 +10,8 @@
 // ThreadSanitizer), so the partitions' threshold is lowered for the
 // partitioned attempts to run at all, and every meshing test asserts they
 // did.  The engine's kept vertex keys against keys computed at every
-// attempt.  The walks of passes that drop most of their points.  FILTERPOINTS' runs (one per thread) on 70,000 points against
+// attempt.  The walks of passes that drop most of their points.
+// FILTERPOINTS' runs (one per thread) on 70,000 points against
 // the greedy filter.  The boundary recovery's threads (the region's
 // search, our flips beside TetGen's calls, the checks of the
 // replacements, the facet look-ups) on CGAL's fandisk: the same mesh and
@@ -181,20 +182,18 @@ namespace fm = CGAL::Fast_Delaunay_triangulation_3_internal::mesher;
 namespace fi = CGAL::Fast_Delaunay_triangulation_3_internal;
 
 // Case c's mesh as the mesher hands it to the refinement (recovered,
-// flagged, coloured, sized), and the refinement's options.
+// flagged, coloured, sized), and the refinement's options, by the mesher's
+// own steps.
 void prepare_refinement(const Case& c, const CGAL::Fast_mesher_3::Mesher_options& options, fm::Constrained_mesh& cm,
                         fm::Refinement_options& refinement)
 {
+  namespace md = CGAL::Fast_mesher_3::mesher_detail;
   fm::Surface_soup soup = fm::surfaces_from_triangles(c.surface.points, c.surface.triangles);
   const fm::Unit_scaling scaling(soup);
   scaling.scale(soup);
   fm::empty_mesh_and_recovery(soup, options.threads, cm);
-  fm::flag_constrained_facets(soup, cm, options.threads);
-  fm::colour_volumes(cm);
-  CGAL::Fast_mesher_3::mesher_detail::set_size_bounds(options, scaling, cm.size);
-  fm::surface_sizes(soup, cm);
-  refinement.threads = options.threads;
-  refinement.min_points_per_thread = options.min_points_per_thread;
+  md::colour_and_size(soup, scaling, options, cm);
+  refinement = md::refinement_options(options);
 }
 
 // A refinement whose size is far below the surface's triangles (the cube's

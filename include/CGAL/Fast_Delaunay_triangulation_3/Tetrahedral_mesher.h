@@ -229,6 +229,30 @@ inline void set_size_bounds(const Mesher_options& options, const Unit_scaling& s
   }
 }
 
+// What the refinement starts from, after the boundary recovery: the
+// constrained facets flagged, the volumes coloured, the sizes set (the
+// user's bounds, then the surface's).  Throws the user's size error.
+inline void colour_and_size(const Surface_soup& soup, const Unit_scaling& scaling, const Mesher_options& options,
+                            Constrained_mesh& cm)
+{
+  flag_constrained_facets(soup, cm, std::max(1, options.threads));
+  colour_volumes(cm);
+  set_size_bounds(options, scaling, cm.size);
+  surface_sizes(soup, cm);
+  cm.size.rethrow_user_error();
+}
+
+inline Refinement_options refinement_options(const Mesher_options& options)
+{
+  Refinement_options refinement;
+  refinement.radius_ratio = options.radius_ratio;
+  refinement.min_edge_ratio = options.min_edge_ratio;
+  refinement.max_passes = options.max_refinement_passes;
+  refinement.threads = std::max(1, options.threads);
+  refinement.min_points_per_thread = options.min_points_per_thread;
+  return refinement;
+}
+
 // `on_mesh(cm)` sees the final constrained mesh before it is extracted.
 // `soup` is at the unit scale of `scaling` (Unit_scaling.h); the mesh
 // handed on and returned is at the input's.
@@ -251,22 +275,12 @@ Tetrahedral_mesh mesh_soup(const Surface_soup& soup, const Unit_scaling& scaling
   stats.steiner_points = recovery.steiner_points;
 
   Clock::time_point t1 = Clock::now();
-  flag_constrained_facets(soup, cm, std::max(1, options.threads));
-  colour_volumes(cm);
-  set_size_bounds(options, scaling, cm.size);
-  surface_sizes(soup, cm);
-  cm.size.rethrow_user_error();
+  colour_and_size(soup, scaling, options, cm);
   stats.triangles_over_size = triangles_over_size(cm, options.radius_ratio);
   stats.colouring_seconds = seconds_since(t1);
 
   t1 = Clock::now();
-  Refinement_options refinement;
-  refinement.radius_ratio = options.radius_ratio;
-  refinement.min_edge_ratio = options.min_edge_ratio;
-  refinement.max_passes = options.max_refinement_passes;
-  refinement.threads = std::max(1, options.threads);
-  refinement.min_points_per_thread = options.min_points_per_thread;
-  Constrained_refinement refine(cm, refinement);
+  Constrained_refinement refine(cm, refinement_options(options));
   const std::vector<Refinement_pass> passes = refine.run([&](const Refinement_pass& pass, int k) {
     if(options.progress) options.progress(k, pass.inserted, pass.tetrahedra);
   });
