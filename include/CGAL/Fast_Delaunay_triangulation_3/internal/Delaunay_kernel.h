@@ -729,7 +729,6 @@ private:
     Tet_id* queue = cavity.data();
     Facet_code* facets = inner.data();
     std::size_t queued = 0, found = 0;
-    bool complete = true;
 
     // Whether a neighbour is in conflict is a coin toss that the branch
     // predictor cannot learn, and a mispredicted branch on it is resolved
@@ -738,11 +737,14 @@ private:
     // as the next queue entry and as the next boundary candidate, and only
     // the counts move with it.  Boundary records, whose vertex numbering
     // branches, are built after the search (complete_boundary).
-    auto visit = [&](Tet_id t, int f) __attribute__((always_inline)) {
+    // Returns false when a partitioned search meets a foreign tetrahedron in
+    // conflict: the search stops there (a rare branch out of the loop, which
+    // the sequential instantiation, always true, compiles away).
+    auto visit = [&](Tet_id t, int f) __attribute__((always_inline)) -> bool {
       const Facet_code code = m_.neighbor_code(t, f);
       const Tet_id u = tet_of(code);
       Vertex_id* uv = m_.tets[u].v;
-      if(uv[0] & mark_bit) return; // in the cavity already
+      if(uv[0] & mark_bit) return true; // in the cavity already
       // A tetrahedron touching the cavity through several facets is tested once.
       bool conflict = false;
       if(!(uv[1] & mark_bit)) {
@@ -751,10 +753,7 @@ private:
         // only branch is on the rare foreign conflict, not on the coin toss.
         const bool owned = ownership_.owns_across(uv, facet_of(code));
         conflict = in_conflict(u, p);
-        if(Ownership::partitioned && (conflict & !owned)) {
-          complete = false;
-          return;
-        }
+        if(Ownership::partitioned && (conflict & !owned)) return false;
         cavity_ghosts_ += conflict & (uv[3] == ghost_vertex);
         uv[0] |= static_cast<Vertex_id>(conflict) << 31;
         uv[1] |= static_cast<Vertex_id>(!conflict) << 31;
@@ -766,12 +765,13 @@ private:
       queued += conflict;
       facets[found] = facet_code(t, f);
       found += !conflict;
+      return true;
     };
 
     cavity_ghosts_ = m_.is_ghost(start) ? 1 : 0;
     m_.mark_free(start);
     queue[queued++] = start;
-    for(int f = 0; f < 4 && complete; ++f) visit(start, f);
+    bool complete = visit(start, 0) && visit(start, 1) && visit(start, 2) && visit(start, 3);
     for(std::size_t k = 1; k < queued && complete; ++k) {
       if(queued + 3 > cavity.size()) {
         cavity.resize(2 * cavity.size());
@@ -784,9 +784,10 @@ private:
       const Facet_code entered = static_cast<Facet_code>(queue[k]);
       const Tet_id t = tet_of(entered);
       const int back = facet_of(entered);
-      visit(t, (back + 1) & 3);
-      visit(t, (back + 2) & 3);
-      visit(t, (back + 3) & 3);
+      if(!(visit(t, (back + 1) & 3) && visit(t, (back + 2) & 3) && visit(t, (back + 3) & 3))) {
+        complete = false;
+        break;
+      }
     }
     for(std::size_t k = 1; k < queued; ++k) queue[k] = tet_of(static_cast<Facet_code>(queue[k]));
     cavity.resize(queued);
