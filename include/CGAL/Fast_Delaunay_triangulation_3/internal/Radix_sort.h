@@ -26,11 +26,18 @@
 namespace CGAL {
 namespace Fast_Delaunay_triangulation_3_internal {
 
+// A default-constructed item is left unwritten: the buffers of millions of
+// items (BRIO's keys and the sort's second buffer) are sized before the
+// chunked loops fill them, and zeroing them first made one thread fault in
+// and clear all their pages.
 template <class Value>
 struct Key_value
 {
   std::uint64_t key;
   Value value;
+
+  Key_value() noexcept {}
+  Key_value(std::uint64_t k, const Value& v) noexcept : key(k), value(v) {}
 };
 
 // Below this many items per chunk, waking a second thread costs more than the loop it would share.
