@@ -1,15 +1,18 @@
-// Points with a NaN or infinite coordinate: insert(first, last), the range
-// constructor and insert(p) throw std::invalid_argument whose message names
-// the position of the first bad point in the input, and the triangulation is
-// left exactly as it was (same vertices, same cells, valid) and usable.
+// Points with a NaN or infinite coordinate: insert(first, last) (from arrays,
+// read in place, and from other ranges), the range constructor and insert(p)
+// throw std::invalid_argument whose message names the position of the first
+// bad point in the input, and the triangulation is left exactly as it was
+// (same vertices, same cells, valid) and usable.
 // Extreme but finite coordinates are accepted.
 #include "triangulation_checks.h"
 
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 
 #include <cctype>
+#include <deque>
 #include <iterator>
 #include <limits>
+#include <list>
 #include <string>
 #include <vector>
 
@@ -154,6 +157,38 @@ TEST(Bad_input, RangeInsertThrowsNamingThePositionAndChangesNothing)
           expect_invalid_argument_at([&] { tr.insert(points.begin(), points.end()); }, position);
           expect_unchanged(tr, before);
         }
+}
+
+// The range insertion reads arrays of points (pointers, std::vector) where
+// they are and copies other ranges first: both check every point before
+// anything changes.
+TEST(Bad_input, EveryKindOfRangeThrowsAlike)
+{
+  std::vector<Point> points = to_points<Point>(uniform_points(301, 8));
+  points[200] = with_coordinate(points[200], 2, bad_values[0].value);
+  const std::list<Point> listed(points.begin(), points.end());
+  const std::deque<Point> queued(points.begin(), points.end());
+  const Point* const array = points.data();
+  for(const Start& start : starts()) {
+    SCOPED_TRACE(start.name);
+    Fast_dt tr(start.points.begin(), start.points.end());
+    const Snapshot before(tr);
+    expect_invalid_argument_at([&] { tr.insert(array, array + points.size()); }, 200);
+    expect_unchanged(tr, before);
+    expect_invalid_argument_at([&] { tr.insert(points.cbegin(), points.cend()); }, 200);
+    expect_unchanged(tr, before);
+    expect_invalid_argument_at([&] { tr.insert(listed.begin(), listed.end()); }, 200);
+    expect_unchanged(tr, before);
+    expect_invalid_argument_at([&] { tr.insert(queued.begin(), queued.end()); }, 200);
+    expect_unchanged(tr, before);
+    std::vector<Fast_dt::Vertex_handle> none;
+    expect_invalid_argument_at(
+        [&] { tr.insert_and_give_vertices(points.begin(), points.end(), std::back_inserter(none)); }, 200);
+    expect_invalid_argument_at(
+        [&] { tr.insert_and_give_vertices(listed.begin(), listed.end(), std::back_inserter(none)); }, 200);
+    EXPECT_TRUE(none.empty());
+    expect_unchanged(tr, before);
+  }
 }
 
 TEST(Bad_input, FirstBadPointIsNamed)

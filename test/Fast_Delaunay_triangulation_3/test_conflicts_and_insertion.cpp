@@ -13,8 +13,10 @@
 #include <CGAL/Fast_Delaunay_triangulation_3.h>
 
 #include <cmath>
+#include <deque>
 #include <iterator>
 #include <limits>
+#include <list>
 #include <set>
 #include <string>
 #include <vector>
@@ -367,6 +369,51 @@ TEST(BulkInsertion, GivesTheVertexOfEveryInputPoint)
   EXPECT_THROW(fast.insert_and_give_vertices(bad, bad + 2, std::back_inserter(none)), std::invalid_argument);
   EXPECT_EQ(fast.number_of_vertices(), 0u);
   EXPECT_TRUE(none.empty());
+}
+
+// Arrays of points (pointers, std::vector) are read where they are, other
+// ranges copied first: the same triangulation (CGAL's) and vertices either
+// way, in every dimension, duplicates included; the triangulation keeps its
+// own copy of the points (the array may change afterwards).
+TEST(BulkInsertion, ArraysAndOtherRangesGiveTheSameTriangulation)
+{
+  for(const std::string name : {"uniform", "coplanar"}) {
+    std::vector<Point> points = to_points<Point>(make_points("uniform", 3000, 53));
+    if(name == "coplanar")
+      for(Point& p : points) p = Point(p.x(), p.y(), 0.25);
+    for(std::size_t i = 0; i < 100; ++i) points.push_back(points[7 * i]);
+    const std::list<Point> listed(points.begin(), points.end());
+    const std::deque<Point> queued(points.begin(), points.end());
+    const Cgal_dt cgal(points.begin(), points.end());
+    auto expect_cgals = [&](const Fast_dt& fast, const char* range) {
+      SCOPED_TRACE(name + ", from " + range);
+      ASSERT_TRUE(fast.is_valid());
+      EXPECT_EQ(fast.dimension(), cgal.dimension());
+      EXPECT_EQ(fast.number_of_vertices(), cgal.number_of_vertices());
+      EXPECT_TRUE(finite_vertex_keys(fast) == finite_vertex_keys(cgal));
+      EXPECT_TRUE(finite_cell_keys(fast) == finite_cell_keys(cgal));
+    };
+    std::vector<Point> array = points;
+    Fast_dt from_array;
+    EXPECT_EQ(from_array.insert(array.data(), array.data() + array.size()), std::ptrdiff_t(3000));
+    for(Point& p : array) p = Point(9, 9, 9);
+    expect_cgals(from_array, "a pointer range, then overwritten");
+    expect_cgals(Fast_dt(points.cbegin(), points.cend()), "a vector");
+    expect_cgals(Fast_dt(listed.begin(), listed.end()), "a list");
+    expect_cgals(Fast_dt(queued.begin(), queued.end()), "a deque");
+
+    Fast_dt half(points.begin(), points.begin() + 1500), half_too(points.begin(), points.begin() + 1500);
+    std::vector<Fast_dt::Vertex_handle> in_place, copied;
+    half.insert_and_give_vertices(points.begin() + 1500, points.end(), std::back_inserter(in_place));
+    half_too.insert_and_give_vertices(std::next(listed.begin(), 1500), listed.end(), std::back_inserter(copied));
+    ASSERT_EQ(in_place.size(), copied.size());
+    for(std::size_t i = 0; i < in_place.size(); ++i) {
+      ASSERT_EQ(in_place[i]->point(), points[1500 + i]) << name << " point " << 1500 + i;
+      ASSERT_EQ(copied[i]->point(), points[1500 + i]) << name << " point " << 1500 + i;
+    }
+    expect_cgals(half, "insert_and_give_vertices on a vector");
+    expect_cgals(half_too, "insert_and_give_vertices on a list");
+  }
 }
 
 // insert(p) in a loop, with points in random order, after a bulk insertion,

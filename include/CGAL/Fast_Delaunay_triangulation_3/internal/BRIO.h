@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -64,6 +65,19 @@ inline std::vector<std::size_t> brio_round_targets(std::size_t n)
   return ends;
 }
 
+// Where the input points are read, in place (a point source): point(i) is the address of the x, y, z of point i,
+// three consecutive doubles.  Packed_points is an array x0 y0 z0 x1 ...; the class's range insertion also reads a
+// user's array of CGAL points through its own source, without copying it first (Fast_Delaunay_triangulation_3.h).
+struct Packed_points
+{
+  const double* xyz;
+  const double* point(std::size_t i) const { return xyz + 3 * i; }
+};
+
+// Whether T is a point source rather than packed coordinates (a pointer or an array, which the overloads below wrap).
+template <class T>
+using enable_if_point_source = typename std::enable_if<!std::is_pointer<typename std::decay<T>::type>::value>::type;
+
 // How brio_keys lays out a key: bits [0, index_bits) hold the Moore index (hash bits in round 0), the bits above
 // hold the round; key_bits is what the radix sort needs to look at.
 struct Bounding_box
@@ -82,7 +96,8 @@ struct Brio_key_layout
 };
 
 // Box of n >= 1 points, each chunk reduced separately: min and max are exact, so any chunking gives the same box.
-inline Bounding_box bounding_box(const double* xyz, std::size_t n, int num_threads)
+template <class Points, class = enable_if_point_source<Points>>
+Bounding_box bounding_box(const Points& points, std::size_t n, int num_threads)
 {
   CGAL_precondition(n > 0);
   // Four points per step into 12 independent lanes (lane j sees axis j % 3): the min/max chains no longer serialise
@@ -94,19 +109,20 @@ inline Bounding_box bounding_box(const double* xyz, std::size_t n, int num_threa
     const std::size_t begin = chunk_begin(n, chunks, c), end = chunk_begin(n, chunks, c + 1);
     double lo[lanes], hi[lanes];
     for(std::size_t j = 0; j < lanes; ++j)
-      lo[j] = hi[j] = xyz[3 * begin + j % 3];
+      lo[j] = hi[j] = points.point(begin)[j % 3];
     std::size_t i = begin;
-    for(; i + lanes / 3 <= end; i += lanes / 3) {
-      const double* p = xyz + 3 * i;
-      for(std::size_t j = 0; j < lanes; ++j) {
-        lo[j] = std::min(lo[j], p[j]);
-        hi[j] = std::max(hi[j], p[j]);
+    for(; i + lanes / 3 <= end; i += lanes / 3)
+      for(std::size_t k = 0; k < lanes / 3; ++k) {
+        const double* p = points.point(i + k);
+        for(std::size_t a = 0; a < 3; ++a) {
+          lo[3 * k + a] = std::min(lo[3 * k + a], p[a]);
+          hi[3 * k + a] = std::max(hi[3 * k + a], p[a]);
+        }
       }
-    }
     for(; i < end; ++i)
       for(std::size_t j = 0; j < 3; ++j) {
-        lo[j] = std::min(lo[j], xyz[3 * i + j]);
-        hi[j] = std::max(hi[j], xyz[3 * i + j]);
+        lo[j] = std::min(lo[j], points.point(i)[j]);
+        hi[j] = std::max(hi[j], points.point(i)[j]);
       }
     Bounding_box& box = partial[std::size_t(c)];
     for(std::size_t a = 0; a < 3; ++a) {
@@ -121,6 +137,11 @@ inline Bounding_box bounding_box(const double* xyz, std::size_t n, int num_threa
       box.hi[a] = std::max(box.hi[a], other.hi[a]);
     }
   return box;
+}
+
+inline Bounding_box bounding_box(const double* xyz, std::size_t n, int num_threads)
+{
+  return bounding_box(Packed_points{xyz}, n, num_threads);
 }
 
 namespace brio_detail {
@@ -145,8 +166,9 @@ inline int brio_bits_per_axis(std::size_t n)
 
 // Fills `items` with one (key, point index) pair per point, in input order and unsorted; sorting them by key gives
 // the insertion order. The Moore grid is the points' bounding box with the default split. Points must be finite.
-inline Brio_key_layout brio_keys(const double* xyz, std::size_t n, std::uint64_t seed, int num_threads,
-                                 std::vector<Key_value<std::uint32_t>>& items)
+template <class Points, class = enable_if_point_source<Points>>
+Brio_key_layout brio_keys(const Points& points, std::size_t n, std::uint64_t seed, int num_threads,
+                          std::vector<Key_value<std::uint32_t>>& items)
 {
   CGAL_precondition(n <= std::size_t(std::numeric_limits<std::uint32_t>::max()) + 1);
   const std::vector<std::size_t> targets = brio_round_targets(n);
@@ -170,7 +192,7 @@ inline Brio_key_layout brio_keys(const double* xyz, std::size_t n, std::uint64_t
   for(std::size_t k = 0; k < threshold_count; ++k)
     threshold[k] = std::uint64_t(double(targets[k]) / double(n) * 0x1p53);
 
-  layout.box = bounding_box(xyz, n, num_threads);
+  layout.box = bounding_box(points, n, num_threads);
   const Bounding_box& box = layout.box;
   const Moore_grid grid(box.lo, box.hi, layout.bits_per_axis);
   const Moore_curve curve(layout.bits_per_axis);
@@ -185,11 +207,17 @@ inline Brio_key_layout brio_keys(const double* xyz, std::size_t n, std::uint64_t
       for(std::size_t k = 0; k < threshold_count; ++k)
         round += (hash >> 11) >= threshold[k];
       // The round-0 low bits are re-mixed: the top bits of `hash` are biased small in round 0, by selection.
-      const std::uint64_t low = round == 0 ? brio_detail::mix64(hash) & index_mask : grid.key(curve, xyz + 3 * i);
+      const std::uint64_t low = round == 0 ? brio_detail::mix64(hash) & index_mask : grid.key(curve, points.point(i));
       items[i] = {round << index_bits | low, std::uint32_t(i)};
     }
   });
   return layout;
+}
+
+inline Brio_key_layout brio_keys(const double* xyz, std::size_t n, std::uint64_t seed, int num_threads,
+                                 std::vector<Key_value<std::uint32_t>>& items)
+{
+  return brio_keys(Packed_points{xyz}, n, seed, num_threads, items);
 }
 
 namespace brio_detail {
@@ -212,7 +240,8 @@ constexpr std::size_t shared_cell_budget = 64;
 // block of repeated points approached by a chain of points at every binary
 // scale would be sorted again at each of ~100 levels.  Keys stay as they are;
 // the order within a run depends on the points only.
-inline void sort_shared_cells(const double* xyz, std::vector<Key_value<std::uint32_t>>& items, std::size_t begin)
+template <class Points>
+void sort_shared_cells(const Points& points, std::vector<Key_value<std::uint32_t>>& items, std::size_t begin)
 {
   std::vector<std::pair<std::size_t, std::size_t>> runs;
   auto push_runs = [&](std::size_t first, std::size_t last, auto&& key_of) {
@@ -237,17 +266,17 @@ inline void sort_shared_cells(const double* xyz, std::vector<Key_value<std::uint
     budget -= b - a;
     double lo[3], hi[3];
     for(int axis = 0; axis < 3; ++axis)
-      lo[axis] = hi[axis] = xyz[3 * std::size_t(items[a].value) + axis];
+      lo[axis] = hi[axis] = points.point(items[a].value)[axis];
     for(std::size_t k = a; k < b; ++k)
       for(int axis = 0; axis < 3; ++axis) {
-        lo[axis] = std::min(lo[axis], xyz[3 * std::size_t(items[k].value) + axis]);
-        hi[axis] = std::max(hi[axis], xyz[3 * std::size_t(items[k].value) + axis]);
+        lo[axis] = std::min(lo[axis], points.point(items[k].value)[axis]);
+        hi[axis] = std::max(hi[axis], points.point(items[k].value)[axis]);
       }
     if(lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) continue; // one point, repeated
     const Moore_grid grid(lo, hi, bits);
     cell.resize(b - a);
     for(std::size_t k = a; k < b; ++k)
-      cell[k - a] = {grid.key(curve, xyz + 3 * std::size_t(items[k].value)), items[k].value};
+      cell[k - a] = {grid.key(curve, points.point(items[k].value)), items[k].value};
     std::sort(cell.begin(), cell.end());
     if(cell.front().first == cell.back().first) continue;
     for(std::size_t k = a; k < b; ++k)
@@ -280,11 +309,12 @@ struct Brio_workspace
   Brio_key_layout layout;
 };
 
-// xyz holds n finite points as x0 y0 z0 x1 ...; the same seed gives the same order for any num_threads.
-inline void brio_order(const double* xyz, std::size_t n, std::uint64_t seed, int num_threads,
-                       Brio_workspace& workspace, Brio_order& result)
+// The n points of a point source, all finite; the same seed gives the same order for any num_threads.
+template <class Points, class = enable_if_point_source<Points>>
+void brio_order(const Points& points, std::size_t n, std::uint64_t seed, int num_threads, Brio_workspace& workspace,
+                Brio_order& result)
 {
-  workspace.layout = brio_keys(xyz, n, seed, num_threads, workspace.items);
+  workspace.layout = brio_keys(points, n, seed, num_threads, workspace.items);
   radix_sort(workspace.items, workspace.scratch, workspace.layout.key_bits, num_threads);
 
   std::vector<Key_value<std::uint32_t>>& items = workspace.items;
@@ -295,7 +325,7 @@ inline void brio_order(const double* xyz, std::size_t n, std::uint64_t seed, int
       std::partition_point(items.begin(), items.end(),
                            [&](const Key_value<std::uint32_t>& item) { return (item.key >> index_bits) <= r; }) -
       items.begin());
-  brio_detail::sort_shared_cells(xyz, items, result.round_end[0]);
+  brio_detail::sort_shared_cells(points, items, result.round_end[0]);
 
   result.order.resize(n);
   const int chunks = chunk_count(n, num_threads);
@@ -307,12 +337,25 @@ inline void brio_order(const double* xyz, std::size_t n, std::uint64_t seed, int
   result.box = workspace.layout.box;
 }
 
-inline Brio_order brio_order(const double* xyz, std::size_t n, std::uint64_t seed = 0, int num_threads = 1)
+// xyz holds n finite points as x0 y0 z0 x1 ...
+inline void brio_order(const double* xyz, std::size_t n, std::uint64_t seed, int num_threads,
+                       Brio_workspace& workspace, Brio_order& result)
+{
+  brio_order(Packed_points{xyz}, n, seed, num_threads, workspace, result);
+}
+
+template <class Points, class = enable_if_point_source<Points>>
+Brio_order brio_order(const Points& points, std::size_t n, std::uint64_t seed = 0, int num_threads = 1)
 {
   Brio_workspace workspace;
   Brio_order result;
-  brio_order(xyz, n, seed, num_threads, workspace, result);
+  brio_order(points, n, seed, num_threads, workspace, result);
   return result;
+}
+
+inline Brio_order brio_order(const double* xyz, std::size_t n, std::uint64_t seed = 0, int num_threads = 1)
+{
+  return brio_order(Packed_points{xyz}, n, seed, num_threads);
 }
 
 } // namespace Fast_Delaunay_triangulation_3_internal

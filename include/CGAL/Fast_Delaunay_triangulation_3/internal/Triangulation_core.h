@@ -135,18 +135,24 @@ public:
     set_sub_determinants(with_sub_determinants);
   }
 
-  // Throws std::invalid_argument naming the first non-finite coordinate.
-  static void check_finite(const double* xyz, std::size_t n)
+  // Throws std::invalid_argument naming the first non-finite coordinate of
+  // the n points of a point source (BRIO.h).
+  template <class Points, class = enable_if_point_source<Points>>
+  static void check_finite(const Points& points, std::size_t n)
   {
-    for(std::size_t i = 0; i < 3 * n; ++i) {
-      if(!std::isfinite(xyz[i])) {
-        std::ostringstream message;
-        message << "Fast_Delaunay_triangulation_3: point #" << i / 3 << " of the input has a "
-                << (std::isnan(xyz[i]) ? "NaN" : "infinite") << " coordinate";
-        throw std::invalid_argument(message.str());
+    for(std::size_t i = 0; i < n; ++i) {
+      for(int a = 0; a < 3; ++a) {
+        const double c = points.point(i)[a];
+        if(!std::isfinite(c)) {
+          std::ostringstream message;
+          message << "Fast_Delaunay_triangulation_3: point #" << i << " of the input has a "
+                  << (std::isnan(c) ? "NaN" : "infinite") << " coordinate";
+          throw std::invalid_argument(message.str());
+        }
       }
     }
   }
+  static void check_finite(const double* xyz, std::size_t n) { check_finite(Packed_points{xyz}, n); }
 
   // Inserts n points given as x, y, z triples (already checked finite).
   // vertex_of_input, if not null, receives for every input point the id of
@@ -154,6 +160,17 @@ public:
   // vertices.  If `consumed` is the vector holding xyz, it is freed as soon
   // as the vertex records are written (before the mesh grows).
   std::size_t insert(const double* xyz, std::size_t n, std::vector<Vertex_id>* vertex_of_input,
+                     std::vector<double>* consumed = nullptr)
+  {
+    CGAL_precondition(consumed == nullptr || consumed->data() == xyz);
+    return insert(Packed_points{xyz}, n, vertex_of_input, consumed);
+  }
+
+  // The same for the n points of a point source (BRIO.h), read where they
+  // are: the copy of the input made to call the one above is freed (when
+  // `consumed` is not null) once the vertex records are written.
+  template <class Points, class = enable_if_point_source<Points>>
+  std::size_t insert(const Points& points, std::size_t n, std::vector<Vertex_id>* vertex_of_input,
                      std::vector<double>* consumed = nullptr)
   {
     last_report = Insertion_report();
@@ -171,20 +188,17 @@ public:
     walk_starts_.clear();
     tet_of_vertex_.clear();
     const std::size_t first_new = vertex_slots();
-    Brio_order order = brio_order(xyz, n, seed, partitions);
+    Brio_order order = brio_order(points, n, seed, partitions);
     mesh.vertices.resize(first_new + n);
-    write_vertex_records(xyz, order.order, first_new);
+    write_vertex_records(points, order.order, first_new);
     bool rounds_in_curve_order = true;
     for(int a = 0; a < 3; ++a) {
       box_lo_[a] = std::min(box_lo_[a], order.box.lo[a]);
       box_hi_[a] = std::max(box_hi_[a], order.box.hi[a]);
       rounds_in_curve_order = rounds_in_curve_order && box_lo_[a] == order.box.lo[a] && box_hi_[a] == order.box.hi[a];
     }
-    if(consumed != nullptr) {
-      CGAL_assertion(consumed->data() == xyz);
-      std::vector<double>().swap(*consumed);
-      xyz = nullptr;
-    }
+    // The points are not read again.
+    if(consumed != nullptr) std::vector<double>().swap(*consumed);
     const Clock::time_point t1 = Clock::now();
     last_report.sort_seconds = seconds(t0, t1);
     progress_total_ = n;
@@ -655,9 +669,10 @@ private:
 
   // Grows the bounding box of all vertices (kept incrementally: single-point
   // insertions must not scan the vertices).
-  // Vertex records first_new + i = point order[i] of xyz, written (random
-  // reads of the input) on the threads of the partitioned engine.
-  void write_vertex_records(const double* xyz, const std::vector<std::uint32_t>& order, std::size_t first_new)
+  // Vertex records first_new + i = point order[i] of the input, written
+  // (random reads of the input) on the threads of the partitioned engine.
+  template <class Points>
+  void write_vertex_records(const Points& points, const std::vector<std::uint32_t>& order, std::size_t first_new)
   {
     const std::size_t n = order.size();
     const int chunks = chunk_count(n, partitions);
@@ -665,7 +680,7 @@ private:
       const std::size_t end = chunk_begin(n, chunks, c + 1);
       for(std::size_t i = chunk_begin(n, chunks, c); i < end; ++i) {
         Vertex_record& r = mesh.vertices[first_new + i];
-        const double* p = xyz + 3 * std::size_t(order[i]);
+        const double* p = points.point(order[i]);
         r.xyz[0] = p[0]; r.xyz[1] = p[1]; r.xyz[2] = p[2];
         r.scratch = 0;
       }
