@@ -167,8 +167,8 @@ public:
   }
 
   // The same for the n points of a point source (BRIO.h), read where they
-  // are: the copy of the input made to call the one above is freed (when
-  // `consumed` is not null) once the vertex records are written.
+  // are; `consumed`, if not null, is the copy of the input that the source
+  // reads, freed as above.
   template <class Points, class = enable_if_point_source<Points>>
   std::size_t insert(const Points& points, std::size_t n, std::vector<Vertex_id>* vertex_of_input,
                      std::vector<double>* consumed = nullptr)
