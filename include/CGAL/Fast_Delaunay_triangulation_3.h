@@ -270,6 +270,22 @@ public:
     return vertices;
   }
 
+  // Not in CGAL: insert_and_give_vertices for the n points given as x, y, z
+  // triples of doubles (point i at xyz[3i], xyz[3i + 1], xyz[3i + 2]), read
+  // where they are, with no point object made per row: the Python module's
+  // numpy arrays.  For kernels with double coordinates.
+  template <class OutputIterator, bool doubles = !keeps_kernel_points>
+  typename std::enable_if<doubles, OutputIterator>::type
+  insert_coordinates_and_give_vertices(const double* xyz, std::size_t n, OutputIterator vertices)
+  {
+    std::vector<Vertex_id> vertex_of_input;
+    const std::vector<Point> no_points;
+    insert_points(Fast_Delaunay_triangulation_3_internal::Packed_points{xyz}, n, &vertex_of_input, &no_points,
+                  nullptr);
+    for(Vertex_id v : vertex_of_input) *vertices++ = Vertex_handle(anchor_.get(), v);
+    return vertices;
+  }
+
   Vertex_handle insert(const Point& p)
   {
     double xyz[3];

@@ -23,8 +23,6 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 #endif
 
-#include <boost/iterator/counting_iterator.hpp>
-#include <boost/iterator/transform_iterator.hpp>
 
 #include <algorithm>
 #include <array>
@@ -80,24 +78,6 @@ Double_array point_rows(const py::handle& points, const char* what)
       throw py::value_error(std::string(what) + ": row " + std::to_string(i / 3) + " has a " +
                             (std::isnan(xyz[i]) ? "NaN" : "infinite") + " coordinate");
   return rows;
-}
-
-// The rows of an (n, 3) array as a range of CGAL points, each made as it is
-// read: the insertion copies the coordinates once, with no array of points
-// between (24 bytes a point, and their page faults, saved).
-struct Point_of_row
-{
-  const double* xyz;
-  Point operator()(std::size_t i) const { return Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); }
-};
-typedef boost::transform_iterator<Point_of_row, boost::counting_iterator<std::size_t>> Row_point_iterator;
-
-std::pair<Row_point_iterator, Row_point_iterator> points_of(const Double_array& rows)
-{
-  const Point_of_row point_of{rows.data()};
-  const std::size_t n = static_cast<std::size_t>(rows.shape(0));
-  return {Row_point_iterator(boost::counting_iterator<std::size_t>(0), point_of),
-          Row_point_iterator(boost::counting_iterator<std::size_t>(n), point_of)};
 }
 
 // None: every hardware thread; else at least 1.
@@ -189,10 +169,9 @@ public:
     Row* out = named.mutable_data();
     {
       py::gil_scoped_release unlocked;
-      const auto points_in = points_of(input);
       std::vector<Vertex_handle> vertices;
       vertices.reserve(n);
-      delaunay_.insert_and_give_vertices(points_in.first, points_in.second, std::back_inserter(vertices));
+      delaunay_.insert_coordinates_and_give_vertices(input.data(), n, std::back_inserter(vertices));
       const Row first = static_cast<Row>(row_count_);
       row_count_ += n;
       if(keeps_rows_) {

@@ -416,6 +416,48 @@ TEST(BulkInsertion, ArraysAndOtherRangesGiveTheSameTriangulation)
   }
 }
 
+// insert_coordinates_and_give_vertices (not in CGAL; the Python module's
+// entry) reads x, y, z triples where they are: the vertices that
+// insert_and_give_vertices gives for the same points, duplicates included,
+// and a non-finite coordinate throws naming its point and changes nothing.
+TEST(BulkInsertion, CoordinateTriplesGiveTheVerticesOfTheirPoints)
+{
+  std::vector<Point> points = to_points<Point>(make_points("uniform", 2000, 59));
+  for(std::size_t i = 0; i < 50; ++i) points.push_back(points[11 * i]);
+  std::vector<double> xyz;
+  for(const Point& p : points) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  Fast_dt from_points(points.begin(), points.begin() + 500), from_triples(points.begin(), points.begin() + 500);
+  std::vector<Fast_dt::Vertex_handle> by_points, by_triples;
+  from_points.insert_and_give_vertices(points.begin() + 500, points.end(), std::back_inserter(by_points));
+  from_triples.insert_coordinates_and_give_vertices(xyz.data() + 3 * 500, points.size() - 500,
+                                                    std::back_inserter(by_triples));
+  ASSERT_EQ(by_triples.size(), by_points.size());
+  for(std::size_t i = 0; i < by_triples.size(); ++i) {
+    ASSERT_EQ(by_triples[i]->point(), points[500 + i]) << "point " << 500 + i;
+    ASSERT_EQ(by_points[i]->point(), points[500 + i]) << "point " << 500 + i;
+  }
+  for(std::size_t i = 0; i < 50; ++i)
+    EXPECT_EQ(by_triples[points.size() - 550 + i]->point(), points[11 * i]);
+  const Cgal_dt cgal(points.begin(), points.end());
+  ASSERT_TRUE(from_triples.is_valid());
+  EXPECT_EQ(from_triples.number_of_vertices(), cgal.number_of_vertices());
+  EXPECT_TRUE(finite_cell_keys(from_triples) == finite_cell_keys(cgal));
+
+  const std::vector<Point_key> vertices_before = finite_vertex_keys(from_triples);
+  const std::vector<Cell_key> cells_before = finite_cell_keys(from_triples);
+  xyz[3 * 700 + 1] = std::numeric_limits<double>::infinity();
+  std::vector<Fast_dt::Vertex_handle> none;
+  try {
+    from_triples.insert_coordinates_and_give_vertices(xyz.data(), points.size(), std::back_inserter(none));
+    ADD_FAILURE() << "no exception";
+  } catch(const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("#700 "), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(none.empty());
+  EXPECT_TRUE(finite_vertex_keys(from_triples) == vertices_before);
+  EXPECT_TRUE(finite_cell_keys(from_triples) == cells_before);
+}
+
 // insert(p) in a loop, with points in random order, after a bulk insertion,
 // after removals, and growing the box at every point: CGAL's triangulation,
 // and walks of a few steps (they start from a grid of recent vertices; from
