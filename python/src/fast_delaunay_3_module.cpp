@@ -23,7 +23,6 @@
 #include <CGAL/Fast_Delaunay_triangulation_3/Tetrahedral_mesher.h>
 #endif
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
