@@ -208,27 +208,16 @@ public:
                         typename std::enable_if<!std::is_convertible<InputIterator, Cell_handle>::value>::type* = nullptr)
   {
     typedef typename std::iterator_traits<InputIterator>::value_type Value;
-    std::vector<double> xyz;
-    // With a kernel whose FT is not double, the user's points are kept
-    // (Kernel_points.h): gathered first, their doubles checked exact.
-    std::vector<Point> points;
     std::vector<Vertex_id> vertex_of_input;
-    std::vector<Vertex_id>* const ids = keeps_kernel_points ? &vertex_of_input : nullptr;
     if constexpr(std::is_convertible<Value, Point>::value) {
-      if constexpr(keeps_kernel_points) {
-        points.assign(first, last);
-        append_coordinates(points.begin(), points.end(), xyz, std::forward_iterator_tag());
-      } else {
-        if constexpr(is_point_array_iterator<InputIterator>())
-          if(first != last && coordinates_in_place(*first))
-            return insert_points(Point_objects{std::addressof(*first)}, std::size_t(last - first), nullptr,
-                                 &points, nullptr);
-        append_coordinates(first, last, xyz, typename std::iterator_traits<InputIterator>::iterator_category());
-      }
-      return insert_coordinates(xyz, ids, &points);
+      return insert_range_of_points(first, last, keeps_kernel_points ? &vertex_of_input : nullptr);
     } else {
       static_assert(!std::is_void<Vertex_info>::value,
                     "points with infos need a vertex base with info (Triangulation_vertex_base_with_info_3)");
+      // With a kernel whose FT is not double, the user's points are kept
+      // (Kernel_points.h): gathered first, their doubles checked exact.
+      std::vector<Point> points;
+      std::vector<double> xyz;
       std::vector<Vertex_info> infos;
       Fast_Delaunay_triangulation_3_internal::read_points_and_infos(first, last, infos, [&](const Point& p) {
         if constexpr(keeps_kernel_points) points.push_back(p);
@@ -248,24 +237,8 @@ public:
   template <class InputIterator, class OutputIterator>
   OutputIterator insert_and_give_vertices(InputIterator first, InputIterator last, OutputIterator vertices)
   {
-    std::vector<Point> points;
-    std::vector<double> xyz;
     std::vector<Vertex_id> vertex_of_input;
-    bool in_place = false;
-    if constexpr(keeps_kernel_points) {
-      points.assign(first, last);
-      append_coordinates(points.begin(), points.end(), xyz, std::forward_iterator_tag());
-    } else {
-      if constexpr(is_point_array_iterator<InputIterator>()) {
-        in_place = first != last && coordinates_in_place(*first);
-        if(in_place)
-          insert_points(Point_objects{std::addressof(*first)}, std::size_t(last - first), &vertex_of_input, &points,
-                        nullptr);
-      }
-      if(!in_place)
-        append_coordinates(first, last, xyz, typename std::iterator_traits<InputIterator>::iterator_category());
-    }
-    if(!in_place) insert_coordinates(xyz, &vertex_of_input, &points);
+    insert_range_of_points(first, last, &vertex_of_input);
     for(Vertex_id v : vertex_of_input) *vertices++ = Vertex_handle(anchor_.get(), v);
     return vertices;
   }
@@ -1023,6 +996,29 @@ private:
   // so the copy of the input does not stay resident while the mesh grows.
   // `points`: the user's objects of the range, empty when the kernel's FT
   // is double (then vertex_of_input may be null).
+  // The points of a range of Point: with a kernel whose FT is not double,
+  // the user's points are kept (Kernel_points.h), gathered first and their
+  // doubles checked exact (vertex_of_input must not be null); else an array
+  // of them is read in place and any other range copied to doubles.
+  template <class InputIterator>
+  std::ptrdiff_t insert_range_of_points(InputIterator first, InputIterator last,
+                                        std::vector<Vertex_id>* vertex_of_input)
+  {
+    std::vector<Point> points;
+    std::vector<double> xyz;
+    if constexpr(keeps_kernel_points) {
+      points.assign(first, last);
+      append_coordinates(points.begin(), points.end(), xyz, std::forward_iterator_tag());
+    } else {
+      if constexpr(is_point_array_iterator<InputIterator>())
+        if(first != last && coordinates_in_place(*first))
+          return insert_points(Point_objects{std::addressof(*first)}, std::size_t(last - first), vertex_of_input,
+                               &points, nullptr);
+      append_coordinates(first, last, xyz, typename std::iterator_traits<InputIterator>::iterator_category());
+    }
+    return insert_coordinates(xyz, vertex_of_input, &points);
+  }
+
   std::ptrdiff_t insert_coordinates(std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input,
                                     const std::vector<Point>* points)
   {
