@@ -28,6 +28,7 @@ ENGINE_COLOURS = {
     "cgal-move": "tab:gray",
     "fast-epec": "tab:olive",
     "cgal-epec": "tab:cyan",
+    "hxt": "black",
 }
 LINE_STYLES = ["-", "--", ":", "-."]
 MARKERS = ["o", "s", "^", "D", "v", "P"]

@@ -16,13 +16,14 @@
 // one point above the bounding box after an untimed insertion of the points (with --dist plane, points in the plane
 // z = x: the lift from dimension 2 to 3); each is compared with its CGAL counterpart. Built with TetGen, the row
 // tetgen (run by default) is TetGen's Delaunay tetrahedralization of the same points, for comparison: its failures
-// and other cell counts are notes.
+// and other cell counts are notes. Built with Gmsh, the row hxt (run by default, on every --threads value) is the
+// paper's own kernel, Gmsh's hxtDelaunay, run by the helper delaunay_benchmark_hxt; a comparison too.
 //
 // Usage: delaunay_benchmark [--n 1e6[,1e7...]] [--dist uniform[,shell,torus,surface...]|all] [--surface FILE]
 //                           [--engines fast,cgal,cgal-par,fast-par,fast-remove,cgal-remove,fast-par-remove,
 //                                      cgal-par-remove,fast-move,cgal-move,
 //                                      fast-epec,cgal-epec,fast-loop,cgal-loop,fast-hint,cgal-hint,
-//                                      fast-apex,cgal-apex,tetgen]
+//                                      fast-apex,cgal-apex,tetgen,hxt]
 //                           [--rounds 3] [--threads 1,2] [--phases] [--verbose] [--scalar-paths] [--csv FILE|-]
 //
 // Besides the volume distributions of the tests, shell, torus and surface are what scans give: points near a closed
@@ -55,7 +56,9 @@
 #include "../../test/Fast_Delaunay_triangulation_3/point_sets.h"
 
 #include <malloc.h>
+#include <poll.h>
 #include <sched.h>
+#include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -69,6 +72,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -147,6 +151,7 @@ struct Engine_result
   int attempts_left_out = 0;         // rows beyond max_attempt_rows
   Attempt_report attempts[max_attempt_rows];
   Outside_attempts outside_attempts; // with attempts
+  long peak_kib = 0;                 // an engine run in a process of its own (hxt): that process's peak RSS
 };
 static_assert(std::is_trivially_copyable<Engine_result>::value, "Engine_result is sent through a pipe");
 
@@ -435,6 +440,99 @@ Engine_result run_fast_parallel_with_attempts(const Points& points, int threads)
 }
 #endif
 
+// ------------------------------------------------------------------------------------------------ HXT
+
+// delaunay_benchmark_hxt beside this program (built where Debian's libgmsh-dev 4.8 is installed); empty without it.
+std::string hxt_helper()
+{
+  char self[4096];
+  const ssize_t length = ::readlink("/proc/self/exe", self, sizeof self - 1);
+  if(length <= 0) return "";
+  std::string helper(self, static_cast<std::size_t>(length));
+  helper = helper.substr(0, helper.rfind('/') + 1) + "delaunay_benchmark_hxt";
+  return ::access(helper.c_str(), X_OK) == 0 ? helper : "";
+}
+
+// Gmsh's HXT, the paper's own kernel (hxtDelaunay), on `threads` OpenMP threads, in the helper process: the points
+// go through a scratch file (not timed); the helper times its own call and reports its peak RSS.
+bool write_all(int fd, const void* data, std::size_t size);
+Engine_result run_hxt(const Points& points, int threads)
+{
+  const std::string helper = hxt_helper();
+  if(helper.empty()) throw std::runtime_error("delaunay_benchmark_hxt was not built (it needs libgmsh-dev 4.8)");
+  std::string path = (std::filesystem::temp_directory_path() / "delaunay_benchmark_hxt_XXXXXX").string();
+  const int file = ::mkstemp(path.data());
+  if(file < 0) throw std::system_error(errno, std::generic_category(), "mkstemp");
+  struct Remove_on_exit
+  {
+    const std::string& path;
+    ~Remove_on_exit() { ::unlink(path.c_str()); }
+  } remove_on_exit{path};
+  std::vector<double> xyz;
+  xyz.reserve(3 * points.size());
+  for(const Point& p : points) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  const std::uint64_t n = points.size();
+  const bool written = write_all(file, &n, sizeof n) && write_all(file, xyz.data(), xyz.size() * sizeof(double));
+  ::close(file);
+  if(!written) throw std::runtime_error("cannot write the points to " + path);
+  xyz = std::vector<double>();
+
+  int out[2];
+  if(::pipe(out) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
+  std::string thread_count = std::to_string(threads);
+  char* argv[] = {const_cast<char*>(helper.c_str()), path.data(), thread_count.data(), nullptr};
+  const pid_t pid = ::fork();
+  if(pid < 0) throw std::system_error(errno, std::generic_category(), "fork");
+  if(pid == 0) {
+    ::dup2(out[1], STDOUT_FILENO);
+    ::close(out[0]);
+    ::close(out[1]);
+    // libgomp's idle threads spin by default, which costs HXT's threads on a busy machine (mesher_benchmark.cpp
+    // measured it); a policy given by the caller is kept.
+    ::setenv("OMP_WAIT_POLICY", "PASSIVE", 0);
+    ::execv(argv[0], argv);
+    _exit(127);
+  }
+  ::close(out[1]);
+  // HXT loops forever on some inputs (points in a plane): the helper is stopped after 20 s plus 20 us a point,
+  // ten times what it takes on 1e6 uniform points.
+  const double limit = 20 + 2e-5 * double(points.size());
+  const Clock::time_point start = Clock::now();
+  std::string line;
+  bool stopped = false;
+  for(;;) {
+    pollfd readable{out[0], POLLIN, 0};
+    const double left = limit - seconds_since(start);
+    if(left <= 0) {
+      ::kill(pid, SIGKILL);
+      stopped = true;
+      break;
+    }
+    const int ready = ::poll(&readable, 1, static_cast<int>(std::ceil(1000 * std::min(left, 1.0))));
+    if(ready < 0 && errno == EINTR) continue;
+    if(ready <= 0) continue;
+    char buffer[256];
+    const ssize_t got = ::read(out[0], buffer, sizeof buffer);
+    if(got < 0 && errno == EINTR) continue;
+    if(got <= 0) break;
+    line.append(buffer, static_cast<std::size_t>(got));
+  }
+  ::close(out[0]);
+  int status = 0;
+  while(::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+  Engine_result result;
+  unsigned long long finite = 0;
+  if(stopped) throw std::runtime_error("delaunay_benchmark_hxt stopped after " + std::to_string(int(limit)) + " s");
+  if(WIFSIGNALED(status))
+    throw std::runtime_error(std::string("delaunay_benchmark_hxt killed by signal ") + strsignal(WTERMSIG(status)) +
+                             " (HXT's message, if any, is above)");
+  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
+     std::sscanf(line.c_str(), "%lf %llu %ld", &result.seconds, &finite, &result.peak_kib) != 3)
+    throw std::runtime_error("delaunay_benchmark_hxt failed (its message is above)");
+  result.finite_cells = finite;
+  return result;
+}
+
 struct Engine
 {
   const char* name;
@@ -481,6 +579,7 @@ const std::vector<Engine>& engine_table()
 #ifdef FDT3_WITH_TETGEN
       {"tetgen", false, true, run_tetgen, "cgal", true},
 #endif
+      {"hxt", true, true, run_hxt, "cgal", true},
   };
   return engines;
 }
@@ -609,7 +708,7 @@ Child_report run_in_child(const Work& work)
     }
     rusage usage;
     ::getrusage(RUSAGE_SELF, &usage);
-    report.peak_kib = usage.ru_maxrss;
+    report.peak_kib = report.result.peak_kib > 0 ? report.result.peak_kib : usage.ru_maxrss;
     _exit(write_all(fds[1], &report, sizeof report) ? 0 : 1);
   }
 
@@ -687,7 +786,9 @@ std::vector<std::string> engine_names(bool default_only)
 {
   std::vector<std::string> names;
   for(const Engine& engine : engine_table())
-    if(engine.by_default || !default_only) names.push_back(engine.name);
+    // HXT's row is a default where its helper was built (with Gmsh).
+    if(!default_only || (engine.by_default && (engine.run != run_hxt || !hxt_helper().empty())))
+      names.push_back(engine.name);
   return names;
 }
 
@@ -861,6 +962,12 @@ void print_machine(std::FILE* out, const char* prefix)
                "%s         points copied into its input array before the clock starts\n",
                c, c);
 #endif
+  if(!hxt_helper().empty())
+    std::fprintf(out,
+                 "%s         hxt = Gmsh's hxtDelaunay (libgmsh), in a helper process: seconds from the creation of\n"
+                 "%s         its mesh (the points copied in) to the end of the insertion, OpenMP threads; peak MiB\n"
+                 "%s         = the helper's max RSS less its size on start (libgmsh's code), with the points\n",
+                 c, c, c);
 }
 
 // ------------------------------------------------------------------------------------------------ measuring
