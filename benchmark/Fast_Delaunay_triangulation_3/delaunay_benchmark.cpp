@@ -495,7 +495,7 @@ Engine_result run_hxt(const Points& points, int threads)
   }
   ::close(out[1]);
   // HXT loops forever on some inputs (points in a plane): the helper is stopped after 20 s plus 20 us a point,
-  // ten times what it takes on 1e6 uniform points.
+  // some twenty times what it takes on 1e6 uniform points.
   const double limit = 20 + 2e-5 * double(points.size());
   const Clock::time_point start = Clock::now();
   std::string line;

@@ -12,14 +12,14 @@
 // HXT's four doubles per vertex and the insertion (HXT sorts and inserts the points itself); the peak is this
 // process's peak RSS less its resident size on entering main (libgmsh and the libraries it loads, some 40 MiB that
 // delaunay_benchmark's children do not have), with the points held once, as those children hold them.  Exits 1
-// with a message on stderr when HXT fails or returns something other than a triangulation of the points.
+// with a message on stderr when HXT fails or returns what cannot be a triangulation of the points (a vertex number
+// out of range, no finite tetrahedron).
 //
 // Gmsh installs no header of HXT, so the structures are declared here: the two that cross the call, in the layout
 // of Gmsh 4.8's contrib/hxt (CMake builds this program only for Gmsh 4.8); of HXTMesh only the part read and
 // written here, since hxtMeshCreate allocates it.
 
 #include <sys/resource.h>
-
 #include <unistd.h>
 
 #include <chrono>
