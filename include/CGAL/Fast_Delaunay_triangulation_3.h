@@ -992,10 +992,6 @@ private:
     return v.index() == Fast_Delaunay_triangulation_3_internal::ghost_vertex ? 0 : std::uint64_t(v.index()) + 1;
   }
 
-  // Consumes `xyz`: the core frees it once the vertex records are written,
-  // so the copy of the input does not stay resident while the mesh grows.
-  // `points`: the user's objects of the range, empty when the kernel's FT
-  // is double (then vertex_of_input may be null).
   // The points of a range of Point: with a kernel whose FT is not double,
   // the user's points are kept (Kernel_points.h), gathered first and their
   // doubles checked exact (vertex_of_input must not be null); else an array
@@ -1019,6 +1015,10 @@ private:
     return insert_coordinates(xyz, vertex_of_input, &points);
   }
 
+  // Consumes `xyz`: the core frees it once the vertex records are written,
+  // so the copy of the input does not stay resident while the mesh grows.
+  // `points`: the user's objects of the range, empty when the kernel's FT
+  // is double (then vertex_of_input may be null).
   std::ptrdiff_t insert_coordinates(std::vector<double>& xyz, std::vector<Vertex_id>* vertex_of_input,
                                     const std::vector<Point>* points)
   {
